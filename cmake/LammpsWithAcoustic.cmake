@@ -1,0 +1,60 @@
+# Build LAMMPS from LAMMPS_SOURCE_DIR with MPI, GRANULAR and ACOUSTIC, as an
+# external project of this build.  The LAMMPS tree is not modified: a thin
+# overlay tree in the build directory links to it, holds a patched copy of its
+# cmake/ directory, and links src/ACOUSTIC to this repository's package.
+include(ExternalProject)
+include(${CMAKE_CURRENT_LIST_DIR}/AcousticPatchLammps.cmake)
+
+if(NOT EXISTS ${LAMMPS_SOURCE_DIR}/cmake/CMakeLists.txt OR NOT EXISTS ${LAMMPS_SOURCE_DIR}/src/GRANULAR)
+  message(FATAL_ERROR "LAMMPS_SOURCE_DIR='${LAMMPS_SOURCE_DIR}' is not a LAMMPS source tree "
+    "(expected cmake/CMakeLists.txt and src/GRANULAR). Run ./run.sh, which fetches Debian's "
+    "LAMMPS source, or pass -D LAMMPS_SOURCE_DIR=/path/to/lammps.")
+endif()
+
+set(ACOUSTIC_LAMMPS_TREE ${CMAKE_BINARY_DIR}/lammps-tree)
+set(ACOUSTIC_LAMMPS_BUILD ${CMAKE_BINARY_DIR}/lammps)
+
+function(_acoustic_link target link)
+  if(NOT EXISTS ${link} AND NOT IS_SYMLINK ${link})
+    file(CREATE_LINK ${target} ${link} SYMBOLIC)
+  endif()
+endfunction()
+
+file(MAKE_DIRECTORY ${ACOUSTIC_LAMMPS_TREE}/src)
+file(GLOB _entries RELATIVE ${LAMMPS_SOURCE_DIR} ${LAMMPS_SOURCE_DIR}/*)
+foreach(_e ${_entries})
+  if(NOT _e STREQUAL "cmake" AND NOT _e STREQUAL "src")
+    _acoustic_link(${LAMMPS_SOURCE_DIR}/${_e} ${ACOUSTIC_LAMMPS_TREE}/${_e})
+  endif()
+endforeach()
+file(GLOB _entries RELATIVE ${LAMMPS_SOURCE_DIR}/src ${LAMMPS_SOURCE_DIR}/src/*)
+foreach(_e ${_entries})
+  _acoustic_link(${LAMMPS_SOURCE_DIR}/src/${_e} ${ACOUSTIC_LAMMPS_TREE}/src/${_e})
+endforeach()
+_acoustic_link(${PROJECT_SOURCE_DIR}/src/ACOUSTIC ${ACOUSTIC_LAMMPS_TREE}/src/ACOUSTIC)
+if(NOT EXISTS ${ACOUSTIC_LAMMPS_TREE}/cmake/CMakeLists.txt)
+  file(COPY ${LAMMPS_SOURCE_DIR}/cmake DESTINATION ${ACOUSTIC_LAMMPS_TREE})
+endif()
+configure_file(${PROJECT_SOURCE_DIR}/cmake/Modules/Packages/ACOUSTIC.cmake
+               ${ACOUSTIC_LAMMPS_TREE}/cmake/Modules/Packages/ACOUSTIC.cmake COPYONLY)
+acoustic_patch_lammps_cmake(${ACOUSTIC_LAMMPS_TREE}/cmake)
+
+# a new or removed file in src/ACOUSTIC changes the style headers: reconfigure LAMMPS
+file(GLOB _pkg_files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ACOUSTIC/*.cpp
+     ${PROJECT_SOURCE_DIR}/src/ACOUSTIC/*.h)
+string(MD5 _pkg_files_hash "${_pkg_files}")
+
+ExternalProject_Add(lammps
+  SOURCE_DIR ${ACOUSTIC_LAMMPS_TREE}/cmake
+  BINARY_DIR ${ACOUSTIC_LAMMPS_BUILD}
+  CMAKE_ARGS -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE}
+             -DBUILD_MPI=on -DBUILD_SHARED_LIBS=on -DBUILD_OMP=off
+             -DPKG_GRANULAR=on -DPKG_ACOUSTIC=on
+             -DLAMMPS_EXCEPTIONS=on
+             -DACOUSTIC_PACKAGE_FILES=${_pkg_files_hash}
+  INSTALL_COMMAND ""
+  BUILD_ALWAYS TRUE
+  USES_TERMINAL_BUILD TRUE)
+
+set(ACOUSTIC_LMP ${ACOUSTIC_LAMMPS_BUILD}/lmp)
+set(ACOUSTIC_LIBLAMMPS_DIR ${ACOUSTIC_LAMMPS_BUILD})
