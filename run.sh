@@ -123,7 +123,7 @@ case "$cmd" in
     ctest --test-dir "$build" --output-on-failure ;;
   demo)
     configure_and_build
-    exec "$top/examples/demo/run_demo.sh" "$build" ;;
+    exec "$top/examples/incline/run.sh" "$build" ;;
   *)
     sed -n '2,15p' "$0"; exit 2 ;;
 esac
