@@ -1,0 +1,216 @@
+/* ----------------------------------------------------------------------
+   ACOUSTIC package numerics: the linearised contact network.
+------------------------------------------------------------------------- */
+
+#include "acoustic_contact_network.h"
+
+#include "acoustic_solver_error.h"
+
+#include <cmath>
+#include <utility>
+
+namespace Acoustic {
+
+namespace {
+
+bool finite_nonnegative(double x)
+{
+  return std::isfinite(x) && x >= 0.0;
+}
+
+bool finite_positive(double x)
+{
+  return std::isfinite(x) && x > 0.0;
+}
+
+// matrix of the cross product a x b = [a]_x b
+Eigen::Matrix3d cross_matrix(const Eigen::Vector3d &a)
+{
+  Eigen::Matrix3d m;
+  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+  return m;
+}
+
+}    // namespace
+
+ContactModel contact_model_from_name(const std::string &name)
+{
+  if (name == "normal") return ContactModel::Normal;
+  if (name == "full") return ContactModel::Full;
+  throw SolverError("unknown contact model '" + name + "': allowed models are normal, full");
+}
+
+std::string contact_model_name(ContactModel model)
+{
+  return model == ContactModel::Normal ? "normal" : "full";
+}
+
+ContactNetwork::ContactNetwork(int dimension, ContactModel model, std::vector<Grain> grains,
+                               std::vector<Contact> contacts) :
+    dimension_(dimension), model_(model), grains_(std::move(grains)), contacts_(std::move(contacts))
+{
+  if (dimension_ != 2 && dimension_ != 3)
+    throw SolverError("contact network: dimension must be 2 or 3, got " + std::to_string(dimension_));
+  for (std::size_t g = 0; g < grains_.size(); ++g) {
+    if (!finite_positive(grains_[g].mass))
+      throw SolverError("contact network: grain " + std::to_string(g) +
+                        " has a mass that is not positive and finite; give frozen grains their real "
+                        "mass and prescribe or fix their degrees of freedom instead");
+    if (model_ == ContactModel::Full && !finite_positive(grains_[g].radius))
+      throw SolverError("contact network: grain " + std::to_string(g) +
+                        " has a radius that is not positive and finite (model full needs radii)");
+  }
+  const int ngrains = num_grains();
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    const Contact &c = contacts_[k];
+    const std::string which = "contact network: contact " + std::to_string(k) + " ";
+    if (c.i < 0 || c.i >= ngrains || c.j < 0 || c.j >= ngrains)
+      throw SolverError(which + "refers to a grain outside 0.." + std::to_string(ngrains - 1));
+    if (c.i == c.j) throw SolverError(which + "joins grain " + std::to_string(c.i) + " to itself");
+    if (!c.normal.allFinite() || std::abs(c.normal.norm() - 1.0) > 1e-8)
+      throw SolverError(which + "has a normal that is not a unit vector");
+    if (dimension_ == 2 && std::abs(c.normal.z()) > 1e-12)
+      throw SolverError(which + "has a normal with a z component in a 2D network");
+    if (!finite_nonnegative(c.kn) || !finite_nonnegative(c.kt))
+      throw SolverError(which + "has a stiffness that is negative or not finite");
+    if (!finite_nonnegative(c.cn) || !finite_nonnegative(c.ct))
+      throw SolverError(which + "has a dashpot coefficient that is negative or not finite");
+  }
+}
+
+int dofs_per_grain(int dimension, ContactModel model)
+{
+  if (model == ContactModel::Normal) return dimension;
+  return dimension == 2 ? 3 : 6;
+}
+
+int ContactNetwork::dofs_per_grain() const
+{
+  return Acoustic::dofs_per_grain(dimension_, model_);
+}
+
+Eigen::MatrixXd contact_jacobian(int dimension, ContactModel model, const Eigen::Vector3d &normal,
+                                 double radius_i, double radius_j)
+{
+  // Delta = (u_i - u_j) + n x (r_i theta_i + r_j theta_j)
+  const int ndof = dofs_per_grain(dimension, model);
+  Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(3, 2 * ndof);
+  for (int d = 0; d < dimension; ++d) {
+    jac(d, d) = 1.0;
+    jac(d, ndof + d) = -1.0;
+  }
+  if (model == ContactModel::Full) {
+    const Eigen::Matrix3d nx = cross_matrix(normal);
+    if (dimension == 2) {    // only theta_z: column z of [n]_x
+      jac.col(2) = radius_i * nx.col(2);
+      jac.col(ndof + 2) = radius_j * nx.col(2);
+    } else {
+      jac.block(0, 3, 3, 3) = radius_i * nx;
+      jac.block(0, ndof + 3, 3, 3) = radius_j * nx;
+    }
+  }
+  return jac;
+}
+
+Eigen::Vector3cd contact_point_displacement(int dimension, ContactModel model,
+                                            const Eigen::Vector3d &normal, double radius_i,
+                                            double radius_j, const Eigen::VectorXcd &q_i,
+                                            const Eigen::VectorXcd &q_j)
+{
+  const int ndof = dofs_per_grain(dimension, model);
+  if (q_i.size() != ndof || q_j.size() != ndof)
+    throw SolverError("contact point displacement: each grain needs " + std::to_string(ndof) +
+                      " DOF values, got " + std::to_string(q_i.size()) + " and " +
+                      std::to_string(q_j.size()));
+  Eigen::VectorXcd local(2 * ndof);
+  local.head(ndof) = q_i;
+  local.tail(ndof) = q_j;
+  return contact_jacobian(dimension, model, normal, radius_i, radius_j).cast<std::complex<double>>() *
+      local;
+}
+
+Eigen::MatrixXd ContactNetwork::contact_jacobian(const Contact &c) const
+{
+  return Acoustic::contact_jacobian(dimension_, model_, c.normal, grains_[c.i].radius,
+                                    grains_[c.j].radius);
+}
+
+Eigen::SparseMatrix<double> ContactNetwork::assemble(bool dashpots) const
+{
+  const int ndof = dofs_per_grain();
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(contacts_.size() * 4 * ndof * ndof);
+  for (const Contact &c : contacts_) {
+    const double normal_coeff = dashpots ? c.cn : c.kn;
+    const double tangential_coeff = (model_ == ContactModel::Full) ? (dashpots ? c.ct : c.kt) : 0.0;
+    if (dashpots && normal_coeff == 0.0 && tangential_coeff == 0.0) continue;
+    const Eigen::Matrix3d nn = c.normal * c.normal.transpose();
+    const Eigen::Matrix3d spring = normal_coeff * nn + tangential_coeff * (Eigen::Matrix3d::Identity() - nn);
+    const Eigen::MatrixXd jac = contact_jacobian(c);
+    const Eigen::MatrixXd local = jac.transpose() * spring * jac;
+    const int base[2] = {c.i * ndof, c.j * ndof};
+    for (int a = 0; a < 2 * ndof; ++a)
+      for (int b = 0; b < 2 * ndof; ++b)
+        triplets.emplace_back(base[a / ndof] + a % ndof, base[b / ndof] + b % ndof, local(a, b));
+  }
+  Eigen::SparseMatrix<double> matrix(num_dofs(), num_dofs());
+  matrix.setFromTriplets(triplets.begin(), triplets.end());
+  matrix.makeCompressed();
+  return matrix;
+}
+
+Eigen::SparseMatrix<double> ContactNetwork::stiffness_matrix() const
+{
+  return assemble(false);
+}
+
+Eigen::SparseMatrix<double> ContactNetwork::damping_matrix() const
+{
+  return assemble(true);
+}
+
+Eigen::VectorXd ContactNetwork::mass_diagonal() const
+{
+  const int ndof = dofs_per_grain();
+  Eigen::VectorXd mass(num_dofs());
+  for (int g = 0; g < num_grains(); ++g) {
+    const double m = grains_[g].mass;
+    const double inertia = 0.4 * m * grains_[g].radius * grains_[g].radius;
+    for (int d = 0; d < ndof; ++d) mass[dof(g, d)] = d < dimension_ ? m : inertia;
+  }
+  return mass;
+}
+
+Eigen::SparseMatrix<double> ContactNetwork::mass_matrix() const
+{
+  const Eigen::VectorXd mass = mass_diagonal();
+  Eigen::SparseMatrix<double> matrix(num_dofs(), num_dofs());
+  matrix.reserve(Eigen::VectorXi::Ones(num_dofs()));
+  for (int k = 0; k < num_dofs(); ++k) matrix.insert(k, k) = mass[k];
+  matrix.makeCompressed();
+  return matrix;
+}
+
+bool ContactNetwork::has_damping() const
+{
+  for (const Contact &c : contacts_)
+    if (c.cn > 0.0 || (model_ == ContactModel::Full && c.ct > 0.0)) return true;
+  return false;
+}
+
+std::vector<Eigen::Vector3cd> ContactNetwork::contact_displacements(const Eigen::VectorXcd &q) const
+{
+  if (q.size() != num_dofs())
+    throw SolverError("contact displacements: the DOF vector has " + std::to_string(q.size()) +
+                      " entries, the network has " + std::to_string(num_dofs()) + " DOFs");
+  const int ndof = dofs_per_grain();
+  std::vector<Eigen::Vector3cd> delta;
+  delta.reserve(contacts_.size());
+  for (const Contact &c : contacts_)
+    delta.push_back(contact_point_displacement(dimension_, model_, c.normal, grains_[c.i].radius,
+                                               grains_[c.j].radius, q.segment(c.i * ndof, ndof),
+                                               q.segment(c.j * ndof, ndof)));
+  return delta;
+}
+
+}    // namespace Acoustic

@@ -1,0 +1,376 @@
+/* ----------------------------------------------------------------------
+   ACOUSTIC package numerics: steady harmonic response (Helmholtz problem).
+------------------------------------------------------------------------- */
+
+#include "acoustic_helmholtz_solver.h"
+
+#include "acoustic_solver_error.h"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/UmfPackSupport>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <limits>
+
+namespace Acoustic {
+
+namespace {
+
+using Complex = std::complex<double>;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// UMFPACK LU that also reports whether the matrix was found singular.
+template <typename Matrix> class UmfpackLU : public Eigen::UmfPackLU<Matrix> {
+ public:
+  bool singular() const { return this->m_fact_errorCode == UMFPACK_WARNING_singular_matrix; }
+};
+
+// Real symmetric LDL^T (CHOLMOD simplicial, lower triangle), silent on zero pivots.
+class CholmodLDLT : public Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> {
+ public:
+  CholmodLDLT() { this->cholmod().print = 0; }
+};
+
+// Sparsity pattern of the last matrix a factorisation object was analysed for.
+class SparsityPattern {
+ public:
+  template <typename Scalar> bool matches(const Eigen::SparseMatrix<Scalar> &a) const
+  {
+    if (!valid_ || a.rows() != rows_ || a.nonZeros() != static_cast<Eigen::Index>(inner_.size()))
+      return false;
+    return std::equal(outer_.begin(), outer_.end(), a.outerIndexPtr()) &&
+        std::equal(inner_.begin(), inner_.end(), a.innerIndexPtr());
+  }
+  template <typename Scalar> void store(const Eigen::SparseMatrix<Scalar> &a)
+  {
+    rows_ = a.rows();
+    outer_.assign(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1);
+    inner_.assign(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros());
+    valid_ = true;
+  }
+
+ private:
+  bool valid_ = false;
+  Eigen::Index rows_ = 0;
+  std::vector<int> outer_;
+  std::vector<int> inner_;
+};
+
+// Which DOFs are free and where the prescribed values are.
+struct DofPartition {
+  std::vector<int> free_index;          // DOF -> index among the free DOFs, -1 if prescribed
+  std::vector<int> prescribed_index;    // DOF -> index into the prescribed values, -1 if free
+  std::vector<int> free_dofs;
+};
+
+DofPartition partition_dofs(int num_dofs, const std::vector<int> &prescribed_dofs)
+{
+  DofPartition part;
+  part.free_index.assign(num_dofs, 0);
+  part.prescribed_index.assign(num_dofs, -1);
+  for (std::size_t k = 0; k < prescribed_dofs.size(); ++k) {
+    const int dof = prescribed_dofs[k];
+    if (dof < 0 || dof >= num_dofs)
+      throw SolverError("Helmholtz solve: prescribed DOF " + std::to_string(dof) + " is outside 0.." +
+                        std::to_string(num_dofs - 1));
+    if (part.prescribed_index[dof] >= 0)
+      throw SolverError("Helmholtz solve: DOF " + std::to_string(dof) + " is prescribed twice");
+    part.prescribed_index[dof] = static_cast<int>(k);
+    part.free_index[dof] = -1;
+  }
+  for (int dof = 0; dof < num_dofs; ++dof) {
+    if (part.free_index[dof] < 0) continue;
+    part.free_index[dof] = static_cast<int>(part.free_dofs.size());
+    part.free_dofs.push_back(dof);
+  }
+  return part;
+}
+
+// Adds coeff * S to the free-free triplets and moves the free-prescribed part to the right-hand side.
+template <typename Scalar>
+void add_block(const Eigen::SparseMatrix<double> &s, Scalar coeff, const DofPartition &part,
+               const Eigen::VectorXcd &values, std::vector<Eigen::Triplet<Scalar>> &triplets, Eigen::VectorXcd &rhs)
+{
+  for (int col = 0; col < s.outerSize(); ++col) {
+    const int free_col = part.free_index[col];
+    for (Eigen::SparseMatrix<double>::InnerIterator it(s, col); it; ++it) {
+      const int free_row = part.free_index[it.row()];
+      if (free_row < 0) continue;
+      if (free_col >= 0)
+        triplets.emplace_back(free_row, free_col, coeff * it.value());
+      else
+        rhs[free_row] -= Complex(coeff * it.value()) * values[part.prescribed_index[col]];
+    }
+  }
+}
+
+// A_FF (pattern independent of omega and of the values) and b of the Helmholtz problem;
+// damping_coeff = i omega when damping is given.
+template <typename Scalar>
+void assemble_free_system(const Eigen::SparseMatrix<double> &stiffness, const Eigen::SparseMatrix<double> *damping,
+                          Scalar damping_coeff, const Eigen::VectorXd &mass, double omega, const DofPartition &part,
+                          const Eigen::VectorXcd &values, Eigen::SparseMatrix<Scalar> &a, Eigen::VectorXcd &rhs)
+{
+  const int nfree = static_cast<int>(part.free_dofs.size());
+  std::vector<Eigen::Triplet<Scalar>> triplets;
+  triplets.reserve(stiffness.nonZeros() + (damping ? damping->nonZeros() : 0) + nfree);
+  rhs.setZero(nfree);
+  add_block<Scalar>(stiffness, Scalar(1.0), part, values, triplets, rhs);
+  if (damping) add_block<Scalar>(*damping, damping_coeff, part, values, triplets, rhs);
+  for (int k = 0; k < nfree; ++k) triplets.emplace_back(k, k, Scalar(-omega * omega * mass[part.free_dofs[k]]));
+  a.resize(nfree, nfree);
+  a.setFromTriplets(triplets.begin(), triplets.end());
+  a.makeCompressed();
+}
+
+// Right-hand side in the scalar type of the factorisation: [Re b, Im b] for real matrices.
+Eigen::MatrixXd as_columns(const Eigen::VectorXcd &b, double)
+{
+  Eigen::MatrixXd m(b.size(), 2);
+  m.col(0) = b.real();
+  m.col(1) = b.imag();
+  return m;
+}
+Eigen::MatrixXcd as_columns(const Eigen::VectorXcd &b, Complex)
+{
+  return b;
+}
+Eigen::VectorXcd from_columns(const Eigen::MatrixXd &x)
+{
+  return x.col(0).cast<Complex>() + Complex(0.0, 1.0) * x.col(1).cast<Complex>();
+}
+Eigen::VectorXcd from_columns(const Eigen::MatrixXcd &x)
+{
+  return x.col(0);
+}
+
+Eigen::VectorXcd multiply(const Eigen::SparseMatrix<double> &a, const Eigen::VectorXcd &x)
+{
+  const Eigen::VectorXd re = a * x.real();
+  const Eigen::VectorXd im = a * x.imag();
+  return re.cast<Complex>() + Complex(0.0, 1.0) * im.cast<Complex>();
+}
+Eigen::VectorXcd multiply(const Eigen::SparseMatrix<Complex> &a, const Eigen::VectorXcd &x)
+{
+  return a * x;
+}
+
+template <typename Solver> bool numerically_singular(const Solver &solver)
+{
+  return solver.info() != Eigen::Success;
+}
+template <typename Matrix> bool numerically_singular(const UmfpackLU<Matrix> &solver)
+{
+  return solver.info() != Eigen::Success || solver.singular();
+}
+
+struct Attempt {
+  bool factorised = false;
+  Eigen::VectorXcd x;
+  double residual = 0.0;
+};
+
+}    // namespace
+
+struct HelmholtzSolver::Factorisations {
+  CholmodLDLT ldlt;
+  SparsityPattern ldlt_pattern;
+  UmfpackLU<Eigen::SparseMatrix<double>> lu_real;
+  SparsityPattern lu_real_pattern;
+  UmfpackLU<Eigen::SparseMatrix<Complex>> lu_complex;
+  SparsityPattern lu_complex_pattern;
+};
+
+namespace {
+
+// Analyse (if the pattern changed), factorise, solve and measure the residual.
+template <typename Solver, typename Scalar>
+Attempt factorise_and_solve(Solver &solver, SparsityPattern &pattern, const Eigen::SparseMatrix<Scalar> &a,
+                            const Eigen::VectorXcd &rhs, long &num_analyses, long &num_factorisations,
+                            SolverTimings &timings)
+{
+  Attempt attempt;
+  Clock::time_point start = Clock::now();
+  if (!pattern.matches(a)) {
+    solver.analyzePattern(a);
+    pattern.store(a);
+    ++num_analyses;
+    timings.analysis += seconds_since(start);
+    start = Clock::now();
+  }
+  solver.factorize(a);
+  ++num_factorisations;
+  timings.factorisation += seconds_since(start);
+  if (numerically_singular(solver)) return attempt;
+  attempt.factorised = true;
+
+  start = Clock::now();
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Dense;
+  const Dense b = as_columns(rhs, Scalar());
+  const Dense x = solver.solve(b);
+  attempt.x = from_columns(x);
+  const double residual_norm = (multiply(a, attempt.x) - rhs).norm();
+  attempt.residual = residual_norm / rhs.norm();
+  if (!std::isfinite(attempt.residual)) attempt.residual = std::numeric_limits<double>::infinity();
+  timings.solve += seconds_since(start);
+  return attempt;
+}
+
+}    // namespace
+
+LinearSolverChoice linear_solver_from_name(const std::string &name)
+{
+  if (name == "auto") return LinearSolverChoice::Auto;
+  if (name == "ldlt") return LinearSolverChoice::Ldlt;
+  if (name == "lu") return LinearSolverChoice::Lu;
+  throw SolverError("unknown linear solver '" + name + "': allowed solvers are " + linear_solver_names());
+}
+
+std::string linear_solver_name(LinearSolverChoice choice)
+{
+  switch (choice) {
+    case LinearSolverChoice::Ldlt:
+      return "ldlt";
+    case LinearSolverChoice::Lu:
+      return "lu";
+    default:
+      return "auto";
+  }
+}
+
+std::string linear_solver_names()
+{
+  return "auto, ldlt, lu";
+}
+
+std::string solve_status_name(SolveStatus status)
+{
+  switch (status) {
+    case SolveStatus::FactorisationFailed:
+      return "factorisation failed";
+    case SolveStatus::InaccurateSolution:
+      return "inaccurate solution";
+    default:
+      return "success";
+  }
+}
+
+HelmholtzSolver::HelmholtzSolver(LinearSolverChoice choice, double residual_tolerance) :
+    choice_(choice), residual_tolerance_(residual_tolerance), factors_(new Factorisations)
+{
+  if (!(residual_tolerance > 0.0) || !std::isfinite(residual_tolerance))
+    throw SolverError("Helmholtz solver: the residual tolerance must be positive, got " +
+                      std::to_string(residual_tolerance));
+}
+
+HelmholtzSolver::~HelmholtzSolver() = default;
+
+HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stiffness,
+                                         const Eigen::SparseMatrix<double> &damping, const Eigen::VectorXd &mass,
+                                         double omega, const std::vector<int> &prescribed_dofs,
+                                         const Eigen::VectorXcd &prescribed_values)
+{
+  timings_ = SolverTimings();
+  const Clock::time_point start = Clock::now();
+
+  const Eigen::Index n = stiffness.rows();
+  if (stiffness.cols() != n) throw SolverError("Helmholtz solve: the stiffness matrix is not square");
+  if (damping.size() != 0 && (damping.rows() != n || damping.cols() != n))
+    throw SolverError("Helmholtz solve: the damping matrix must be empty or have the size of the stiffness matrix");
+  if (mass.size() != n) throw SolverError("Helmholtz solve: the mass vector must have one entry per DOF");
+  if (!(mass.array() > 0.0).all() || !mass.allFinite())
+    throw SolverError("Helmholtz solve: every mass must be positive and finite");
+  if (!std::isfinite(omega) || omega < 0.0)
+    throw SolverError("Helmholtz solve: the angular frequency must be >= 0 and finite, got " + std::to_string(omega));
+  if (prescribed_values.size() != static_cast<Eigen::Index>(prescribed_dofs.size()))
+    throw SolverError("Helmholtz solve: give one prescribed value per prescribed DOF");
+  if (!prescribed_values.allFinite()) throw SolverError("Helmholtz solve: a prescribed value is not finite");
+
+  bool damped = false;
+  if (omega > 0.0 && damping.size() != 0)
+    for (Eigen::Index k = 0; k < damping.nonZeros(); ++k)
+      if (damping.valuePtr()[k] != 0.0) damped = true;
+  if (damped && choice_ == LinearSolverChoice::Ldlt)
+    throw SolverError("Helmholtz solve: solver ldlt needs an undamped problem (the damped matrix is complex "
+                      "symmetric); use solver auto or lu, or damping 0");
+
+  const DofPartition part = partition_dofs(static_cast<int>(n), prescribed_dofs);
+  const int nfree = static_cast<int>(part.free_dofs.size());
+
+  HelmholtzSolution result;
+  result.q = Eigen::VectorXcd::Zero(n);
+  for (std::size_t k = 0; k < prescribed_dofs.size(); ++k) result.q[prescribed_dofs[k]] = prescribed_values[k];
+  result.factorisation = "none";
+
+  Eigen::VectorXcd rhs;
+  Attempt attempt;
+  bool rhs_zero = false;
+  if (damped) {
+    Eigen::SparseMatrix<Complex> a;
+    assemble_free_system<Complex>(stiffness, &damping, Complex(0.0, omega), mass, omega, part, prescribed_values, a, rhs);
+    timings_.solve += seconds_since(start);
+    rhs_zero = rhs.squaredNorm() == 0.0;
+    if (nfree > 0 && !rhs_zero) {
+      result.factorisation = "lu";
+      attempt = factorise_and_solve(factors_->lu_complex, factors_->lu_complex_pattern, a, rhs, num_analyses_,
+                                    num_factorisations_, timings_);
+    }
+  } else {
+    Eigen::SparseMatrix<double> a;
+    assemble_free_system<double>(stiffness, nullptr, 0.0, mass, omega, part, prescribed_values, a, rhs);
+    timings_.solve += seconds_since(start);
+    rhs_zero = rhs.squaredNorm() == 0.0;
+    if (nfree > 0 && !rhs_zero) {
+      if (choice_ != LinearSolverChoice::Lu) {
+        result.factorisation = "ldlt";
+        attempt = factorise_and_solve(factors_->ldlt, factors_->ldlt_pattern, a, rhs, num_analyses_,
+                                      num_factorisations_, timings_);
+      }
+      const bool ldlt_good = attempt.factorised && attempt.residual <= residual_tolerance_;
+      if (choice_ == LinearSolverChoice::Lu || (choice_ == LinearSolverChoice::Auto && !ldlt_good)) {
+        result.factorisation = "lu";
+        attempt = factorise_and_solve(factors_->lu_real, factors_->lu_real_pattern, a, rhs, num_analyses_,
+                                      num_factorisations_, timings_);
+      }
+    }
+  }
+  if (nfree == 0 || rhs_zero) return result;
+
+  const std::string where = " (omega = " + std::to_string(omega) + ", " + std::to_string(nfree) +
+      " free DOFs, factorisation " + result.factorisation + ")";
+  if (!attempt.factorised) {
+    result.status = SolveStatus::FactorisationFailed;
+    result.relative_residual = 1.0;    // residual of the returned q_F = 0
+    result.message = "the Helmholtz matrix is singular" + where +
+        ": the frequency is an eigenfrequency of the network, or (at omega = 0) part of the network "
+        "is not held by the source; change the frequency, add damping, or fix the floating grains";
+    return result;
+  }
+  result.relative_residual = attempt.residual;
+  if (!std::isfinite(attempt.residual) || !attempt.x.allFinite()) {
+    result.status = SolveStatus::InaccurateSolution;
+    result.relative_residual = 1.0;
+    result.message = "the Helmholtz solution is not finite" + where +
+        ": the matrix is numerically singular; change the frequency or add damping";
+    return result;
+  }
+  for (int k = 0; k < nfree; ++k) result.q[part.free_dofs[k]] = attempt.x[k];
+  if (attempt.residual > residual_tolerance_) {
+    result.status = SolveStatus::InaccurateSolution;
+    result.message = "the relative residual " + std::to_string(attempt.residual) + " exceeds the tolerance " +
+        std::to_string(residual_tolerance_) + where +
+        ": the frequency is close to an eigenfrequency of the network; try solver lu, another "
+        "frequency, or some damping";
+  }
+  return result;
+}
+
+}    // namespace Acoustic

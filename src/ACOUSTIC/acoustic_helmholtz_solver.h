@@ -1,0 +1,110 @@
+/* ----------------------------------------------------------------------
+   ACOUSTIC package numerics: steady harmonic response (Helmholtz problem).
+
+   Given K, C (may be empty or zero) and the diagonal of M, the angular
+   frequency omega, and prescribed DOFs P with (complex) amplitudes q_P,
+   solve for the free DOFs F
+     (K_FF + i omega C_FF - omega^2 M_FF) q_F = -(K_FP + i omega C_FP) q_P.
+
+   Factorisations ("solver" keyword of fix acoustic/mindlin):
+     ldlt  sparse LDL^T of the real symmetric, possibly indefinite matrix
+           (CHOLMOD simplicial, no pivoting); undamped problems only.
+     lu    sparse LU with pivoting (UMFPACK), real or complex.
+     auto  ldlt for undamped problems, falling back to lu when LDL^T meets
+           a zero pivot or its residual is above the tolerance; lu when
+           damped.
+   The solver object keeps the symbolic analysis (fill-reducing ordering) of
+   each factorisation and only refactorises numerically while the sparsity
+   pattern of the free-free matrix stays the same; a new pattern is analysed
+   again.  Counters and timings let the caller check this.
+
+   Numerical failures do not throw: the returned status says what happened,
+   relative_residual = ||A q_F - b|| / ||b|| is always reported, and the
+   returned q never holds NaN or Inf (free DOFs are zero when the
+   factorisation failed or the solution was not finite).  Invalid input
+   (sizes, indices, negative omega, ldlt on a damped problem) throws
+   SolverError.  omega = 0 with a part of the network not held by the
+   prescribed DOFs is singular and returns FactorisationFailed.
+   If b = 0 the solution is q_F = 0 with residual 0, without factorising.
+------------------------------------------------------------------------- */
+
+#ifndef ACOUSTIC_HELMHOLTZ_SOLVER_H
+#define ACOUSTIC_HELMHOLTZ_SOLVER_H
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace Acoustic {
+
+enum class LinearSolverChoice { Auto, Ldlt, Lu };
+
+// "auto", "ldlt" or "lu"; throws SolverError listing the allowed names otherwise.
+LinearSolverChoice linear_solver_from_name(const std::string &name);
+std::string linear_solver_name(LinearSolverChoice choice);
+// "auto, ldlt, lu": for help and error messages.
+std::string linear_solver_names();
+
+enum class SolveStatus {
+  Success,                // residual below the tolerance
+  FactorisationFailed,    // the matrix is (numerically) singular: q_F set to 0
+  InaccurateSolution      // solved, but residual above the tolerance (or not finite: q_F set to 0)
+};
+std::string solve_status_name(SolveStatus status);
+
+struct HelmholtzSolution {
+  Eigen::VectorXcd q;                     // every DOF, prescribed ones included
+  SolveStatus status = SolveStatus::Success;
+  double relative_residual = 0.0;         // ||A q_F - b|| / ||b||, of the factorisation used
+  std::string factorisation;              // "ldlt", "lu" or "none" (b = 0 or no free DOF)
+  std::string message;                    // explanation when status != Success
+  bool ok() const { return status == SolveStatus::Success; }
+};
+
+// Wall time, in seconds, spent in the last call to solve().
+struct SolverTimings {
+  double analysis = 0.0;         // symbolic analysis (ordering)
+  double factorisation = 0.0;    // numeric factorisation
+  double solve = 0.0;            // assembly of A and b, triangular solves, residual
+};
+
+class HelmholtzSolver {
+ public:
+  explicit HelmholtzSolver(LinearSolverChoice choice = LinearSolverChoice::Auto,
+                           double residual_tolerance = 1e-6);
+  ~HelmholtzSolver();
+  HelmholtzSolver(const HelmholtzSolver &) = delete;
+  HelmholtzSolver &operator=(const HelmholtzSolver &) = delete;
+
+  // stiffness, damping: num_dofs x num_dofs (damping may also be 0 x 0);
+  // mass: diagonal of M, positive; prescribed_dofs: distinct indices;
+  // prescribed_values: their amplitudes, same length.
+  HelmholtzSolution solve(const Eigen::SparseMatrix<double> &stiffness,
+                          const Eigen::SparseMatrix<double> &damping, const Eigen::VectorXd &mass,
+                          double omega, const std::vector<int> &prescribed_dofs,
+                          const Eigen::VectorXcd &prescribed_values);
+
+  LinearSolverChoice choice() const { return choice_; }
+  double residual_tolerance() const { return residual_tolerance_; }
+  // Totals since construction: symbolic analyses and numeric factorisations.
+  long num_analyses() const { return num_analyses_; }
+  long num_factorisations() const { return num_factorisations_; }
+  const SolverTimings &last_timings() const { return timings_; }
+
+ private:
+  struct Factorisations;    // CHOLMOD / UMFPACK objects, kept out of this header
+
+  LinearSolverChoice choice_;
+  double residual_tolerance_;
+  long num_analyses_ = 0;
+  long num_factorisations_ = 0;
+  SolverTimings timings_;
+  std::unique_ptr<Factorisations> factors_;
+};
+
+}    // namespace Acoustic
+
+#endif

@@ -1,0 +1,287 @@
+/* ----------------------------------------------------------------------
+   Unit tests: the Helmholtz solver (driven harmonic response).
+------------------------------------------------------------------------- */
+
+#include "acoustic_contact_network.h"
+#include "acoustic_helmholtz_solver.h"
+#include "acoustic_solver_error.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <complex>
+#include <ostream>
+#include <vector>
+
+using namespace Acoustic;
+using Complex = std::complex<double>;
+
+namespace Acoustic {
+// readable test parameter in the output of a parametrised test
+void PrintTo(LinearSolverChoice choice, std::ostream *os)
+{
+  *os << linear_solver_name(choice);
+}
+}    // namespace Acoustic
+
+namespace {
+
+// Chain of grains 0..n_free along x in 2D (model normal): equal masses m, springs k between
+// neighbours, dashpots c.  The y DOFs carry mass only.
+ContactNetwork chain(int n_free, double m, double k, double c = 0.0)
+{
+  std::vector<Grain> grains(n_free + 1, Grain{m, 0.5});
+  std::vector<Contact> contacts;
+  for (int g = 0; g < n_free; ++g) contacts.push_back(Contact{g + 1, g, Eigen::Vector3d(1, 0, 0), k, 0.0, c, 0.0});
+  return ContactNetwork(2, ContactModel::Normal, grains, contacts);
+}
+
+struct Source {
+  std::vector<int> dofs;
+  Eigen::VectorXcd values;
+};
+
+// grain 0 prescribed: ux = 1, uy = 0
+Source chain_source()
+{
+  Source s;
+  s.dofs = {0, 1};
+  s.values = Eigen::VectorXcd::Zero(2);
+  s.values[0] = 1.0;
+  return s;
+}
+
+// Fixed-free chain driven at grain 0 with unit amplitude (free end at grain N):
+//   in the band, cos(theta) = 1 - m w^2/(2k):  q_n = cos((N + 1/2 - n) theta) / cos((N + 1/2) theta)
+//   above it, cosh(phi) = m w^2/(2k) - 1:      q_n = (-1)^n sinh((N + 1/2 - n) phi) / sinh((N + 1/2) phi)
+double chain_closed_form(int n, int n_free, double m, double k, double omega)
+{
+  const double c = 1.0 - m * omega * omega / (2.0 * k);
+  const double big_n = n_free + 0.5;
+  if (c >= -1.0) {
+    const double theta = std::acos(c);
+    return std::cos((big_n - n) * theta) / std::cos(big_n * theta);
+  }
+  const double phi = std::acosh(-c);
+  return (n % 2 == 0 ? 1.0 : -1.0) * std::sinh((big_n - n) * phi) / std::sinh(big_n * phi);
+}
+
+class DrivenChain : public ::testing::TestWithParam<LinearSolverChoice> {};
+
+}    // namespace
+
+TEST_P(DrivenChain, MatchesClosedFormBelowAndAboveTheBand)
+{
+  const int n_free = 25;
+  const double m = 2.0, k = 3.0;
+  const double band_edge = 2.0 * std::sqrt(k / m);
+  const ContactNetwork network = chain(n_free, m, k);
+  const Source source = chain_source();
+  HelmholtzSolver solver(GetParam());
+  for (double fraction : {0.07, 0.37, 0.81, 1.3, 2.5}) {
+    const double omega = fraction * band_edge;
+    SCOPED_TRACE("omega / band edge = " + std::to_string(fraction));
+    const HelmholtzSolution sol = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                               network.mass_diagonal(), omega, source.dofs, source.values);
+    ASSERT_TRUE(sol.ok()) << sol.message;
+    EXPECT_EQ(sol.factorisation, GetParam() == LinearSolverChoice::Lu ? "lu" : "ldlt");
+    EXPECT_LT(sol.relative_residual, 1e-12);
+    double scale = 0.0;
+    for (int n = 0; n <= n_free; ++n) scale = std::max(scale, std::abs(chain_closed_form(n, n_free, m, k, omega)));
+    for (int n = 0; n <= n_free; ++n) {
+      EXPECT_NEAR(sol.q[network.dof(n, 0)].real(), chain_closed_form(n, n_free, m, k, omega), 1e-10 * scale);
+      EXPECT_EQ(sol.q[network.dof(n, 0)].imag(), 0.0);
+      EXPECT_EQ(sol.q[network.dof(n, 1)], 0.0);    // mass-only DOFs stay at rest
+    }
+  }
+  // one pattern: one analysis per factorisation kind, one numeric factorisation per solve
+  if (GetParam() == LinearSolverChoice::Auto) {
+    EXPECT_LE(solver.num_analyses(), 2);
+  } else {
+    EXPECT_EQ(solver.num_analyses(), 1);
+    EXPECT_EQ(solver.num_factorisations(), 5);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, DrivenChain,
+                         ::testing::Values(LinearSolverChoice::Auto, LinearSolverChoice::Ldlt, LinearSolverChoice::Lu),
+                         [](const ::testing::TestParamInfo<LinearSolverChoice> &info) {
+                           return linear_solver_name(info.param);
+                         });
+
+TEST(HelmholtzSolver, DampedChainMatchesDenseComplexSolve)
+{
+  const int n_free = 30;
+  const double m = 1.5, k = 4.0, c = 0.2;
+  const ContactNetwork network = chain(n_free, m, k, c);
+  const Source source = chain_source();
+  ASSERT_TRUE(network.has_damping());
+
+  for (double omega : {0.5, 2.0, 3.1, 5.0}) {
+    HelmholtzSolver solver;    // auto: must take the complex LU
+    const HelmholtzSolution sol = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                               network.mass_diagonal(), omega, source.dofs, source.values);
+    ASSERT_TRUE(sol.ok()) << sol.message;
+    EXPECT_EQ(sol.factorisation, "lu");
+
+    // independent dense solve of the x DOFs of grains 1..N:
+    // (K + i w C - w^2 M) with K, C tridiagonal (free end), right-hand side (k + i w c) at grain 1
+    const Complex spring(k, omega * c);
+    Eigen::MatrixXcd a = Eigen::MatrixXcd::Zero(n_free, n_free);
+    for (int r = 0; r < n_free; ++r) {
+      a(r, r) = (r + 1 < n_free ? 2.0 : 1.0) * spring - omega * omega * m;
+      if (r + 1 < n_free) a(r, r + 1) = a(r + 1, r) = -spring;
+    }
+    Eigen::VectorXcd b = Eigen::VectorXcd::Zero(n_free);
+    b[0] = spring;
+    const Eigen::VectorXcd expected = a.partialPivLu().solve(b);
+    for (int r = 0; r < n_free; ++r)
+      EXPECT_LT(std::abs(sol.q[network.dof(r + 1, 0)] - expected[r]), 1e-10 * expected.cwiseAbs().maxCoeff());
+    EXPECT_GT(expected.imag().cwiseAbs().maxCoeff(), 1e-3);    // the damping matters
+  }
+}
+
+TEST(HelmholtzSolver, ReusesSymbolicAnalysisWhilePatternIsUnchanged)
+{
+  for (LinearSolverChoice choice : {LinearSolverChoice::Ldlt, LinearSolverChoice::Lu}) {
+    SCOPED_TRACE(linear_solver_name(choice));
+    const Source source = chain_source();
+    HelmholtzSolver solver(choice);
+    const ContactNetwork first = chain(40, 1.0, 2.0);
+    HelmholtzSolution sol = solver.solve(first.stiffness_matrix(), first.damping_matrix(), first.mass_diagonal(),
+                                         1.1, source.dofs, source.values);
+    ASSERT_TRUE(sol.ok());
+    EXPECT_EQ(solver.num_analyses(), 1);
+    EXPECT_EQ(solver.num_factorisations(), 1);
+
+    // same pattern, other values and frequency: numeric refactorisation only
+    const ContactNetwork second = chain(40, 1.7, 5.0);
+    sol = solver.solve(second.stiffness_matrix(), second.damping_matrix(), second.mass_diagonal(), 2.3,
+                       source.dofs, source.values);
+    ASSERT_TRUE(sol.ok());
+    EXPECT_EQ(solver.num_analyses(), 1);
+    EXPECT_EQ(solver.num_factorisations(), 2);
+    HelmholtzSolver fresh(choice);
+    const HelmholtzSolution reference = fresh.solve(second.stiffness_matrix(), second.damping_matrix(),
+                                                    second.mass_diagonal(), 2.3, source.dofs, source.values);
+    EXPECT_LT((sol.q - reference.q).norm(), 1e-12 * reference.q.norm());
+
+    // a new contact changes the pattern: analysed again
+    std::vector<Contact> contacts = second.contacts();
+    contacts.push_back(Contact{10, 5, Eigen::Vector3d(1, 0, 0), 0.5, 0.0, 0.0, 0.0});
+    const ContactNetwork third(2, ContactModel::Normal, second.grains(), contacts);
+    sol = solver.solve(third.stiffness_matrix(), third.damping_matrix(), third.mass_diagonal(), 2.3, source.dofs,
+                       source.values);
+    ASSERT_TRUE(sol.ok());
+    EXPECT_EQ(solver.num_analyses(), 2);
+    EXPECT_EQ(solver.num_factorisations(), 3);
+    HelmholtzSolver fresh_third(choice);
+    const HelmholtzSolution reference_third = fresh_third.solve(
+        third.stiffness_matrix(), third.damping_matrix(), third.mass_diagonal(), 2.3, source.dofs, source.values);
+    EXPECT_LT((sol.q - reference_third.q).norm(), 1e-12 * reference_third.q.norm());
+
+    // a different set of prescribed DOFs changes the free-free pattern too
+    Source bigger = source;
+    bigger.dofs.push_back(third.dof(40, 0));
+    bigger.values.conservativeResize(3);
+    bigger.values[2] = Complex(0.0, 1.0);
+    sol = solver.solve(third.stiffness_matrix(), third.damping_matrix(), third.mass_diagonal(), 2.3, bigger.dofs,
+                       bigger.values);
+    ASSERT_TRUE(sol.ok());
+    EXPECT_EQ(solver.num_analyses(), 3);
+    EXPECT_EQ(sol.q[third.dof(40, 0)], Complex(0.0, 1.0));
+
+    const SolverTimings &t = solver.last_timings();
+    EXPECT_GE(t.analysis, 0.0);
+    EXPECT_GT(t.factorisation + t.solve, 0.0);
+  }
+}
+
+TEST(HelmholtzSolver, SingularAtZeroFrequencyWithFloatingGrains)
+{
+  // grains 0-1-2 chain, grains 3-4 a separate pair (floating), grain 5 alone
+  const Eigen::Vector3d x(1, 0, 0);
+  const ContactNetwork network(2, ContactModel::Normal, std::vector<Grain>(6, Grain{1.0, 0.5}),
+                               {Contact{1, 0, x, 1.0, 0, 0, 0}, Contact{2, 1, x, 1.0, 0, 0, 0},
+                                Contact{4, 3, x, 1.0, 0, 0, 0}});
+  const Source source = chain_source();
+  for (LinearSolverChoice choice : {LinearSolverChoice::Auto, LinearSolverChoice::Ldlt, LinearSolverChoice::Lu}) {
+    SCOPED_TRACE(linear_solver_name(choice));
+    HelmholtzSolver solver(choice);
+    const HelmholtzSolution sol = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                               network.mass_diagonal(), 0.0, source.dofs, source.values);
+    EXPECT_EQ(sol.status, SolveStatus::FactorisationFailed);
+    EXPECT_FALSE(sol.message.empty());
+    EXPECT_TRUE(sol.q.allFinite());
+    EXPECT_EQ(sol.q[0], 1.0);
+    EXPECT_EQ(sol.q.tail(sol.q.size() - 2).cwiseAbs().maxCoeff(), 0.0);
+
+    // the same network is fine at omega > 0: floating grains just stay at rest
+    const HelmholtzSolution moving = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                                  network.mass_diagonal(), 0.3, source.dofs, source.values);
+    EXPECT_TRUE(moving.ok()) << moving.message;
+    EXPECT_GT(std::abs(moving.q[network.dof(2, 0)]), 0.1);
+    EXPECT_EQ(moving.q.segment(network.dof(3, 0), 6).cwiseAbs().maxCoeff(), 0.0);
+  }
+}
+
+TEST(HelmholtzSolver, SingularOnAnEigenfrequency)
+{
+  // one free grain of mass 1 on a spring k = 1 to the source: A = k - w^2 m = 0 at w = 1
+  const ContactNetwork network(2, ContactModel::Normal, std::vector<Grain>(2, Grain{1.0, 0.5}),
+                               {Contact{1, 0, Eigen::Vector3d(1, 0, 0), 1.0, 0, 0, 0}});
+  const Source source = chain_source();
+  for (LinearSolverChoice choice : {LinearSolverChoice::Auto, LinearSolverChoice::Ldlt, LinearSolverChoice::Lu}) {
+    SCOPED_TRACE(linear_solver_name(choice));
+    HelmholtzSolver solver(choice);
+    const HelmholtzSolution sol = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                               network.mass_diagonal(), 1.0, source.dofs, source.values);
+    EXPECT_FALSE(sol.ok());
+    EXPECT_EQ(sol.status, SolveStatus::FactorisationFailed);
+    EXPECT_TRUE(sol.q.allFinite());
+    EXPECT_TRUE(std::isfinite(sol.relative_residual));
+    // just off resonance it solves: q_1 = k / (k - w^2 m)
+    const HelmholtzSolution near = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                                network.mass_diagonal(), 0.9, source.dofs, source.values);
+    ASSERT_TRUE(near.ok()) << near.message;
+    EXPECT_NEAR(near.q[2].real(), 1.0 / (1.0 - 0.81), 1e-12);
+  }
+}
+
+TEST(HelmholtzSolver, ZeroSourceGivesZeroResponse)
+{
+  const ContactNetwork network = chain(5, 1.0, 1.0);
+  HelmholtzSolver solver;
+  const HelmholtzSolution sol = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                             network.mass_diagonal(), 0.7, {0, 1}, Eigen::VectorXcd::Zero(2));
+  EXPECT_TRUE(sol.ok());
+  EXPECT_EQ(sol.q.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(solver.num_factorisations(), 0);
+}
+
+TEST(HelmholtzSolver, RejectsInvalidInput)
+{
+  const ContactNetwork network = chain(5, 1.0, 1.0, 0.1);
+  const Source source = chain_source();
+  const Eigen::SparseMatrix<double> k = network.stiffness_matrix(), c = network.damping_matrix();
+  const Eigen::VectorXd m = network.mass_diagonal();
+  HelmholtzSolver ldlt(LinearSolverChoice::Ldlt);
+  EXPECT_THROW(ldlt.solve(k, c, m, 1.0, source.dofs, source.values), SolverError);    // damped: not for ldlt
+  EXPECT_NO_THROW(ldlt.solve(k, Eigen::SparseMatrix<double>(), m, 1.0, source.dofs, source.values));
+  HelmholtzSolver solver;
+  EXPECT_THROW(solver.solve(k, c, m, -1.0, source.dofs, source.values), SolverError);
+  EXPECT_THROW(solver.solve(k, c, m, 1.0, {0, 0}, source.values), SolverError);
+  EXPECT_THROW(solver.solve(k, c, m, 1.0, {0, 99}, source.values), SolverError);
+  EXPECT_THROW(solver.solve(k, c, m, 1.0, {0}, source.values), SolverError);
+  EXPECT_THROW(solver.solve(k, c, Eigen::VectorXd::Zero(m.size()), 1.0, source.dofs, source.values), SolverError);
+  EXPECT_THROW(HelmholtzSolver(LinearSolverChoice::Auto, 0.0), SolverError);
+  EXPECT_EQ(linear_solver_from_name("ldlt"), LinearSolverChoice::Ldlt);
+  try {
+    linear_solver_from_name("cg");
+    FAIL() << "unknown solver name accepted";
+  } catch (const SolverError &e) {
+    EXPECT_NE(std::string(e.what()).find("auto, ldlt, lu"), std::string::npos);
+  }
+}
