@@ -47,7 +47,7 @@ string(MD5 _pkg_files_hash "${_pkg_files}")
 ExternalProject_Add(lammps
   SOURCE_DIR ${ACOUSTIC_LAMMPS_TREE}/cmake
   BINARY_DIR ${ACOUSTIC_LAMMPS_BUILD}
-  CMAKE_ARGS -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE}
+  CMAKE_ARGS --no-warn-unused-cli -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE}
              -DBUILD_MPI=on -DBUILD_SHARED_LIBS=on -DBUILD_OMP=off
              -DPKG_GRANULAR=on -DPKG_ACOUSTIC=on
              -DLAMMPS_EXCEPTIONS=on

@@ -1,19 +1,22 @@
 #include "lammps_fixture.h"
 
 #include "atom.h"
+#include "force.h"
+#include "pair_granular_acoustic.h"
 #include "input.h"
 #include "library.h"
 
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <sstream>
 
 namespace AcousticTest {
 
-LammpsInstance::LammpsInstance()
+LammpsInstance::LammpsInstance(MPI_Comm comm)
 {
   const char *args[] = {"acoustic_test", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
   char **argv = const_cast<char **>(args);
-  lmp = new LAMMPS_NS::LAMMPS(sizeof(args) / sizeof(args[0]), argv, MPI_COMM_WORLD);
+  lmp = new LAMMPS_NS::LAMMPS(sizeof(args) / sizeof(args[0]), argv, comm);
 }
 
 LammpsInstance::~LammpsInstance()
@@ -48,6 +51,43 @@ std::vector<double> LammpsInstance::gather(const char *name, int count)
 long LammpsInstance::natoms() const
 {
   return static_cast<long>(lmp->atom->natoms);
+}
+
+std::map<ContactKey, double> friction_factors(LammpsInstance &L)
+{
+  auto *pair = dynamic_cast<LAMMPS_NS::PairGranularAcoustic *>(L.lmp->force->pair);
+  EXPECT_NE(pair, nullptr) << "pair style is not granular/acoustic";
+  std::map<ContactKey, double> result;
+  if (!pair) return result;
+  std::vector<LAMMPS_NS::PairGranularAcoustic::ContactState> contacts;
+  pair->current_contacts(contacts, 1);
+  const auto *tag = L.lmp->atom->tag;
+  std::vector<double> mine;
+  for (const auto &c : contacts) {
+    mine.push_back(static_cast<double>(std::min(tag[c.i], tag[c.j])));
+    mine.push_back(static_cast<double>(std::max(tag[c.i], tag[c.j])));
+    mine.push_back(pair->friction_factor(c.history));
+  }
+  MPI_Comm world = L.lmp->world;
+  int nprocs;
+  MPI_Comm_size(world, &nprocs);
+  int n = static_cast<int>(mine.size());
+  std::vector<int> counts(nprocs), displs(nprocs, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  std::vector<double> all(displs[nprocs - 1] + counts[nprocs - 1]);
+  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
+                 world);
+  for (std::size_t k = 0; k < all.size(); k += 3) {
+    const ContactKey key(static_cast<long>(all[k]), static_cast<long>(all[k + 1]));
+    auto it = result.find(key);
+    if (it != result.end())
+      // equal up to the rounding of the periodic image's coordinates
+      EXPECT_NEAR(it->second, all[k + 2], 1e-12) << "two copies of contact " << key.first << "-"
+                                                 << key.second << " disagree";
+    result[key] = all[k + 2];
+  }
+  return result;
 }
 
 int mpi_rank()

@@ -6,14 +6,16 @@
 #include "lammps.h"
 
 #include <mpi.h>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace AcousticTest {
 
 class LammpsInstance {
  public:
-  LammpsInstance();
+  explicit LammpsInstance(MPI_Comm comm = MPI_COMM_WORLD);
   ~LammpsInstance();
   LammpsInstance(const LammpsInstance &) = delete;
   LammpsInstance &operator=(const LammpsInstance &) = delete;
@@ -28,6 +30,12 @@ class LammpsInstance {
 
   LAMMPS_NS::LAMMPS *lmp;
 };
+
+// friction factor of every contact of pair granular/acoustic in the whole
+// system, keyed by (lower atom ID, higher atom ID), on every rank of the
+// instance; with newton off the two copies of a contact must agree (checked)
+typedef std::pair<long, long> ContactKey;
+std::map<ContactKey, double> friction_factors(LammpsInstance &L);
 
 int mpi_rank();
 int mpi_size();

@@ -43,38 +43,11 @@ double factor_of(long a, long b)
   return 0.2 + 0.7 * (h - std::floor(h));
 }
 
-typedef std::pair<long, long> ContactKey;
+using AcousticTest::ContactKey;
 
-// every rank: the friction factor of each contact of the whole system, by atom IDs
 std::map<ContactKey, double> all_factors(LammpsInstance &L)
 {
-  PairGranularAcoustic *pair = acoustic_pair(L);
-  std::vector<PairGranularAcoustic::ContactState> contacts;
-  pair->current_contacts(contacts, 1);
-  const auto *tag = L.lmp->atom->tag;
-  std::vector<double> mine;
-  for (const auto &c : contacts) {
-    mine.push_back(static_cast<double>(std::min(tag[c.i], tag[c.j])));
-    mine.push_back(static_cast<double>(std::max(tag[c.i], tag[c.j])));
-    mine.push_back(pair->friction_factor(c.history));
-  }
-  int n = static_cast<int>(mine.size());
-  const int nprocs = AcousticTest::mpi_size();
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<double> all(displs[nprocs - 1] + counts[nprocs - 1]);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, MPI_COMM_WORLD);
-  std::map<ContactKey, double> result;
-  for (std::size_t k = 0; k < all.size(); k += 3) {
-    const ContactKey key(static_cast<long>(all[k]), static_cast<long>(all[k + 1]));
-    auto it = result.find(key);
-    // with newton off a contact across sub-domains is listed twice: both copies must agree
-    if (it != result.end()) EXPECT_DOUBLE_EQ(it->second, all[k + 2]) << key.first << "-" << key.second;
-    result[key] = all[k + 2];
-  }
-  return result;
+  return AcousticTest::friction_factors(L);
 }
 
 void set_factors(LammpsInstance &L)

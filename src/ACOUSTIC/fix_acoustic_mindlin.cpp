@@ -1,0 +1,450 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing authors: the ACOUSTIC package developers.
+
+   Two-time-scale coupling of an ultrasonic vibration to the DEM: every N
+   steps the steady harmonic response of the contact network to a basal
+   drive is solved on rank 0, and each contact's friction factor is set
+   from the tangential vibration it feels (Mindlin law).
+------------------------------------------------------------------------- */
+
+#include "fix_acoustic_mindlin.h"
+
+#include "acoustic_contact_network.h"
+#include "acoustic_solver_error.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+#include "memory.h"
+#include "pair_granular_acoustic.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static const char CMD[] = "fix acoustic/mindlin";
+
+/* ---------------------------------------------------------------------- */
+
+FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), source_groupbit(0), direction_axis(-1), source_mode(ALL),
+    solver_choice(Acoustic::LinearSolverChoice::Auto), ndof(0), damped(0), q_atom(nullptr),
+    amplitude_atom(nullptr), contact_array(nullptr), ncontact_rows(0), maxcontact_rows(0)
+{
+  if (narg < 10)
+    error->all(FLERR, "Illegal {} command: expected fix ID group-ID acoustic/mindlin N "
+                      "frequency f amplitude U0 source group-ID [keyword value ...]", CMD);
+
+  nevery = utils::inumeric(FLERR, arg[3], false, lmp);
+  if (nevery <= 0) error->all(FLERR, "Illegal {} command: N must be > 0, got {}", CMD, nevery);
+  auto expect = [&](int iarg, const char *word) {
+    if (strcmp(arg[iarg], word) != 0)
+      error->all(FLERR, "Illegal {} command: expected '{}' as argument {}, got '{}'", CMD, word,
+                 iarg + 1, arg[iarg]);
+  };
+  expect(4, "frequency");
+  frequency = utils::numeric(FLERR, arg[5], false, lmp);
+  if (frequency < 0.0)
+    error->all(FLERR, "Illegal {} command: frequency must be >= 0 (1/time units), got {}", CMD,
+               frequency);
+  expect(6, "amplitude");
+  amplitude = utils::numeric(FLERR, arg[7], false, lmp);
+  if (amplitude < 0.0)
+    error->all(FLERR, "Illegal {} command: amplitude must be >= 0 (distance units), got {}", CMD,
+               amplitude);
+  expect(8, "source");
+  source_group = arg[9];
+  if (group->find(source_group) < 0)
+    error->all(FLERR, "Illegal {} command: source group {} does not exist; define it with the "
+                      "group command first", CMD, source_group);
+
+  const int dim = domain->dimension;
+  direction[0] = direction[1] = direction[2] = 0.0;
+  direction[dim == 3 ? 2 : 1] = 1.0;
+
+  int iarg = 10;
+  while (iarg < narg) {
+    const int used = settings.parse(iarg, narg, arg, CMD, lmp, true);
+    if (used > 0) {
+      iarg += used;
+      continue;
+    }
+    const std::string key = arg[iarg];
+    auto need = [&](int n) {
+      if (iarg + n >= narg)
+        error->all(FLERR, "Illegal {} command: keyword {} needs {} value(s)", CMD, key, n);
+    };
+    if (key == "direction") {
+      need(3);
+      for (int k = 0; k < 3; k++) direction[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
+      iarg += 4;
+    } else if (key == "mode") {
+      need(1);
+      if (strcmp(arg[iarg + 1], "all") == 0) source_mode = ALL;
+      else if (strcmp(arg[iarg + 1], "normal") == 0) source_mode = NORMAL;
+      else
+        error->all(FLERR, "Illegal {} command: mode must be 'all' or 'normal', got '{}'", CMD,
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (key == "cmu") {
+      need(1);
+      law.cmu = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (law.cmu < 0.0) error->all(FLERR, "Illegal {} command: cmu must be >= 0, got {}", CMD, law.cmu);
+      iarg += 2;
+    } else if (key == "mu_min") {
+      need(1);
+      law.mu_min = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (law.mu_min < 0.0 || law.mu_min > 1.0)
+        error->all(FLERR, "Illegal {} command: mu_min must be in [0, 1], got {}", CMD, law.mu_min);
+      iarg += 2;
+    } else if (key == "solver") {
+      need(1);
+      try {
+        solver_choice = Acoustic::linear_solver_from_name(arg[iarg + 1]);
+      } catch (Acoustic::SolverError &e) {
+        error->all(FLERR, "Illegal {} command: {}", CMD, e.what());
+      }
+      iarg += 2;
+    } else {
+      error->all(FLERR, "Illegal {} command: unknown keyword {}; keywords are direction, mode, "
+                        "stiffness, kappa_scale, ratio, cmu, mu_min, model, damping, solver", CMD, key);
+    }
+  }
+
+  // the drive direction
+  const double norm = sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
+                           direction[2] * direction[2]);
+  if (norm == 0.0) error->all(FLERR, "Illegal {} command: direction must not be the zero vector", CMD);
+  if (dim == 2 && direction[2] != 0.0)
+    error->all(FLERR, "Illegal {} command: in 2D the direction must lie in the xy plane "
+                      "(dz = 0)", CMD);
+  for (int k = 0; k < 3; k++) direction[k] /= norm;
+  for (int k = 0; k < dim; k++)
+    if (fabs(direction[k]) == 1.0) direction_axis = k;
+  if (source_mode == NORMAL && direction_axis < 0)
+    error->all(FLERR, "Illegal {} command: mode normal prescribes one Cartesian component of the "
+                      "source grains; give a direction along x, y or z", CMD);
+
+  damped = (settings.damping_ratio > 0.0);
+  if (damped && solver_choice == Acoustic::LinearSolverChoice::Ldlt)
+    error->all(FLERR, "Illegal {} command: solver ldlt handles undamped (real symmetric) problems "
+                      "only; use solver lu or auto with damping", CMD);
+
+  ndof = Acoustic::dofs_per_grain(dim, settings.model);
+  comm_forward = 2 * ndof;
+
+  // outputs
+  vector_flag = 1;
+  size_vector = NVECTOR;
+  global_freq = nevery;
+  extvector = 0;
+  peratom_flag = 1;
+  size_peratom_cols = damped ? 6 : 3;
+  peratom_freq = nevery;
+  local_flag = 1;
+  size_local_cols = 6;
+  local_freq = nevery;
+  for (double &s : stats) s = 0.0;
+
+  network.reset(new VibrationNetwork(lmp, settings, CMD));
+  solver.reset(new Acoustic::HelmholtzSolver(solver_choice));
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  for (int i = 0; i < atom->nlocal; i++) {
+    for (int k = 0; k < 2 * ndof; k++) q_atom[i][k] = 0.0;
+    for (int k = 0; k < size_peratom_cols; k++) amplitude_atom[i][k] = 0.0;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixAcousticMindlin::~FixAcousticMindlin()
+{
+  atom->delete_callback(id, Atom::GROW);
+  memory->destroy(q_atom);
+  memory->destroy(amplitude_atom);
+  memory->destroy(contact_array);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixAcousticMindlin::setmask()
+{
+  return END_OF_STEP;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixAcousticMindlin::init()
+{
+  network->init();
+  const int igroup_source = group->find(source_group);
+  if (igroup_source < 0)
+    error->all(FLERR, "{}: source group {} no longer exists", CMD, source_group);
+  source_groupbit = group->bitmask[igroup_source];
+
+  int nsource_local = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && (atom->mask[i] & source_groupbit)) nsource_local++;
+  int nsource = 0;
+  MPI_Allreduce(&nsource_local, &nsource, 1, MPI_INT, MPI_SUM, world);
+  if (nsource == 0)
+    error->all(FLERR, "{}: source group {} has no atom in the fix group {}; the source grains "
+                      "must belong to the fix group", CMD, source_group, group->names[igroup]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixAcousticMindlin::setup(int /*vflag*/)
+{
+  update_factors();
+}
+
+void FixAcousticMindlin::end_of_step()
+{
+  update_factors();
+}
+
+/* ----------------------------------------------------------------------
+   rank 0: prescribed DOFs of the source and the Helmholtz solve
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::solve_on_rank0(bool &ok)
+{
+  const double t0 = MPI_Wtime();
+  const Acoustic::ContactNetwork &net = network->network();
+  const int dim = domain->dimension;
+  std::vector<int> prescribed;
+  std::vector<std::complex<double>> values;
+  for (int g : network->marked_grains()) {
+    if (source_mode == ALL) {
+      for (int k = 0; k < dim; k++) {
+        prescribed.push_back(net.dof(g, k));
+        values.push_back(direction[k]);
+      }
+      for (int k = dim; k < ndof; k++) {    // rotations of a rigid vibrating base: none
+        prescribed.push_back(net.dof(g, k));
+        values.push_back(0.0);
+      }
+    } else {
+      prescribed.push_back(net.dof(g, direction_axis));
+      values.push_back(direction[direction_axis]);
+    }
+  }
+  Eigen::VectorXcd qp(values.size());
+  for (std::size_t k = 0; k < values.size(); k++) qp[k] = values[k];
+
+  const Eigen::SparseMatrix<double> K = net.stiffness_matrix();
+  const Eigen::SparseMatrix<double> C =
+      net.has_damping() ? net.damping_matrix() : Eigen::SparseMatrix<double>(0, 0);
+  const Eigen::VectorXd M = net.mass_diagonal();
+  const double t1 = MPI_Wtime();
+
+  Acoustic::HelmholtzSolution sol;
+  try {
+    sol = solver->solve(K, C, M, 2.0 * M_PI * frequency, prescribed, qp);
+  } catch (Acoustic::SolverError &e) {
+    error->one(FLERR, "{}: {}", CMD, e.what());
+  }
+  const double t2 = MPI_Wtime();
+  ok = sol.ok();
+  stats[4] = sol.relative_residual;
+  stats[5] += t1 - t0;    // assembly of K, C, M
+  stats[6] = t2 - t1;
+  stats[8] = static_cast<double>(solver->num_analyses());
+  stats[9] = static_cast<double>(solver->num_factorisations());
+  if (!ok)
+    error->warning(FLERR, "{}: the Helmholtz solve at f = {} failed ({}: {}; relative residual "
+                          "{:.3g}); keeping the previous friction factors. A frequency on a "
+                          "resonance of an undamped network is singular: add damping or move f",
+                   CMD, frequency, Acoustic::solve_status_name(sol.status), sol.message,
+                   sol.relative_residual);
+  else
+    solution = sol.q;
+}
+
+/* ----------------------------------------------------------------------
+   assemble, solve, and set every contact's friction factor
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::update_factors()
+{
+  const double t0 = MPI_Wtime();
+  network->build(groupbit, source_groupbit);
+  stats[5] = MPI_Wtime() - t0;    // walk and gather; rank 0 adds the assembly
+  stats[6] = 0.0;
+
+  const int nlocal = atom->nlocal;
+  if (frequency > 0.0) {
+    int ok = 1;
+    if (comm->me == 0) {
+      bool good = true;
+      solve_on_rank0(good);
+      ok = good ? 1 : 0;
+    }
+    MPI_Bcast(&ok, 1, MPI_INT, 0, world);
+    MPI_Bcast(stats + 4, 3, MPI_DOUBLE, 0, world);
+    MPI_Bcast(stats + 8, 2, MPI_DOUBLE, 0, world);
+    if (!ok) return;
+  }
+
+  const double t1 = MPI_Wtime();
+  if (frequency > 0.0) {
+    network->scatter(solution, q_atom, groupbit);
+    comm->forward_comm_fix(this);
+  } else {
+    for (int i = 0; i < nlocal; i++)
+      for (int k = 0; k < 2 * ndof; k++) q_atom[i][k] = 0.0;
+  }
+
+  // per-atom amplitudes (distance units)
+  const int dim = domain->dimension;
+  for (int i = 0; i < nlocal; i++) {
+    for (int k = 0; k < size_peratom_cols; k++) amplitude_atom[i][k] = 0.0;
+    for (int k = 0; k < dim; k++) {
+      const std::complex<double> qk(q_atom[i][2 * k], q_atom[i][2 * k + 1]);
+      if (damped) {
+        amplitude_atom[i][2 * k] = amplitude * qk.real();
+        amplitude_atom[i][2 * k + 1] = amplitude * qk.imag();
+      } else {
+        amplitude_atom[i][k] = amplitude * std::abs(qk);
+      }
+    }
+  }
+
+  // friction factor of each contact from the vibration of its contact point
+  const auto &contacts = network->local_contacts();
+  PairGranularAcoustic *pair = network->pair();
+  tagint *tag = atom->tag;
+  if (static_cast<int>(contacts.size()) > maxcontact_rows) {
+    maxcontact_rows = static_cast<int>(contacts.size());
+    memory->destroy(contact_array);
+    memory->create(contact_array, maxcontact_rows, size_local_cols, "acoustic/mindlin:contacts");
+  }
+  ncontact_rows = 0;
+  double sum = 0.0, minimum = 1.0, nweak = 0.0, ncounted = 0.0;
+  Eigen::VectorXcd qi(ndof), qj(ndof);
+  for (const auto &c : contacts) {
+    double s = 1.0, ut = 0.0;
+    if (frequency > 0.0) {
+      // evaluate every contact from its lower to its higher atom ID, so that the
+      // two copies of a contact (newton off) get the same factor to the last bit
+      const bool flip = tag[c.i] > tag[c.j];
+      const int a = flip ? c.j : c.i, b = flip ? c.i : c.j;
+      const double sign = flip ? -1.0 : 1.0;
+      for (int k = 0; k < ndof; k++) {
+        qi[k] = std::complex<double>(q_atom[a][2 * k], q_atom[a][2 * k + 1]);
+        qj[k] = std::complex<double>(q_atom[b][2 * k], q_atom[b][2 * k + 1]);
+      }
+      const Eigen::Vector3d n(sign * c.n[0], sign * c.n[1], sign * c.n[2]);
+      const Eigen::Vector3cd delta = Acoustic::contact_point_displacement(
+          dim, settings.model, n, flip ? c.radj : c.radi, flip ? c.radi : c.radj, qi, qj);
+      ut = Acoustic::tangential_amplitude(delta, n, amplitude);
+      s = Acoustic::friction_factor(law, c.kt, ut, c.mu, c.fn);
+    }
+    pair->set_friction_factor(c.history, s);
+    if (!c.counted) continue;
+    double *row = contact_array[ncontact_rows++];
+    row[0] = static_cast<double>(tag[c.i]);
+    row[1] = static_cast<double>(tag[c.j]);
+    row[2] = c.fn;
+    row[3] = c.kn;
+    row[4] = ut;
+    row[5] = s;
+    sum += s;
+    minimum = MIN(minimum, s);
+    if (s < 0.5) nweak += 1.0;
+    ncounted += 1.0;
+  }
+  size_local_rows = ncontact_rows;
+  array_local = contact_array;
+
+  double local[3] = {sum, nweak, ncounted}, global[3];
+  MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, world);
+  double global_min = 1.0;
+  MPI_Allreduce(&minimum, &global_min, 1, MPI_DOUBLE, MPI_MIN, world);
+  stats[0] = static_cast<double>(network->ncontacts_total());
+  stats[1] = (global[2] > 0.0) ? global[0] / global[2] : 1.0;
+  stats[2] = global_min;
+  stats[3] = (global[2] > 0.0) ? global[1] / global[2] : 0.0;
+  stats[7] = MPI_Wtime() - t1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixAcousticMindlin::compute_vector(int n)
+{
+  return stats[n];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixAcousticMindlin::grow_arrays(int nmax)
+{
+  memory->grow(q_atom, nmax, 2 * ndof, "acoustic/mindlin:q_atom");
+  memory->grow(amplitude_atom, nmax, size_peratom_cols, "acoustic/mindlin:amplitude_atom");
+  array_atom = amplitude_atom;
+}
+
+void FixAcousticMindlin::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int k = 0; k < 2 * ndof; k++) q_atom[j][k] = q_atom[i][k];
+  for (int k = 0; k < size_peratom_cols; k++) amplitude_atom[j][k] = amplitude_atom[i][k];
+}
+
+int FixAcousticMindlin::pack_exchange(int i, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < size_peratom_cols; k++) buf[m++] = amplitude_atom[i][k];
+  return m;
+}
+
+int FixAcousticMindlin::unpack_exchange(int nlocal, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < size_peratom_cols; k++) amplitude_atom[nlocal][k] = buf[m++];
+  for (int k = 0; k < 2 * ndof; k++) q_atom[nlocal][k] = 0.0;
+  return m;
+}
+
+int FixAcousticMindlin::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
+                                          int * /*pbc*/)
+{
+  int m = 0;
+  for (int ii = 0; ii < n; ii++)
+    for (int k = 0; k < 2 * ndof; k++) buf[m++] = q_atom[list[ii]][k];
+  return m;
+}
+
+void FixAcousticMindlin::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int k = 0; k < 2 * ndof; k++) q_atom[i][k] = buf[m++];
+}
+
+double FixAcousticMindlin::memory_usage()
+{
+  double bytes = (double) atom->nmax * (2 * ndof + size_peratom_cols) * sizeof(double);
+  bytes += (double) maxcontact_rows * size_local_cols * sizeof(double);
+  return bytes;
+}

@@ -1,0 +1,85 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(acoustic/mindlin,FixAcousticMindlin);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_ACOUSTIC_MINDLIN_H
+#define LMP_FIX_ACOUSTIC_MINDLIN_H
+
+#include "fix.h"
+
+#include "acoustic_helmholtz_solver.h"
+#include "acoustic_mindlin_law.h"
+#include "vibration_network.h"
+
+#include <memory>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixAcousticMindlin : public Fix {
+ public:
+  FixAcousticMindlin(class LAMMPS *, int, char **);
+  ~FixAcousticMindlin() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void end_of_step() override;
+  double compute_vector(int) override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  double memory_usage() override;
+
+  enum SourceMode { ALL, NORMAL };
+  enum { NVECTOR = 10 };
+
+ private:
+  double frequency, amplitude;
+  std::string source_group;
+  int source_groupbit;
+  double direction[3];
+  int direction_axis;    // 0, 1, 2 if the direction is along x, y, z, else -1
+  SourceMode source_mode;
+  VibrationNetworkSettings settings;
+  Acoustic::MindlinFrictionLaw law;
+  Acoustic::LinearSolverChoice solver_choice;
+
+  std::unique_ptr<VibrationNetwork> network;
+  std::unique_ptr<Acoustic::HelmholtzSolver> solver;
+  int ndof;            // DOFs per grain of the network
+  int damped;
+
+  double **q_atom;            // complex DOF amplitudes per atom, (re, im) pairs
+  double **amplitude_atom;    // per-atom output: translational amplitudes
+  double **contact_array;     // local output: one row per contact
+  int ncontact_rows, maxcontact_rows;
+  double stats[NVECTOR];
+  Eigen::VectorXcd solution;    // rank 0: DOF amplitudes of the last successful solve
+
+  void update_factors();
+  void solve_on_rank0(bool &ok);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

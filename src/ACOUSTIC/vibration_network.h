@@ -1,0 +1,113 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   The contact network of the current packing, as fix acoustic/mindlin and
+   compute vibration/modes see it: the contacts of pair granular/acoustic
+   between atoms of a group, with stiffnesses (and dashpots) from the
+   settings shared by both commands, gathered to rank 0 as an
+   Acoustic::ContactNetwork keyed by atom IDs; and per-grain values sent
+   back from rank 0 to the atoms' owners.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_VIBRATION_NETWORK_H
+#define LMP_VIBRATION_NETWORK_H
+
+#include "pointers.h"
+
+#include "acoustic_contact_network.h"
+
+#include <memory>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class PairGranularAcoustic;
+
+// keywords shared by fix acoustic/mindlin and compute vibration/modes
+struct VibrationNetworkSettings {
+  enum Stiffness { PAIR, HERTZ };
+  Stiffness stiffness = PAIR;
+  double youngs_modulus = 0.0, poisson_ratio = 0.0;    // stiffness hertz
+  double kappa_scale = 1.0;
+  double ratio = -1.0;    // k_t / k_n; < 0: pair's own k_t (pair), 2/7 (hertz)
+  Acoustic::ContactModel model = Acoustic::ContactModel::Normal;
+  double damping_ratio = 0.0;
+
+  // parse the network keyword at arg[iarg]; returns the number of words used,
+  // 0 if arg[iarg] is not a network keyword; errors name `command`
+  int parse(int iarg, int narg, char **arg, const std::string &command, class LAMMPS *lmp,
+            bool allow_damping);
+};
+
+class VibrationNetwork : protected Pointers {
+ public:
+  // a contact listed on this processor (both atoms in the group)
+  struct LocalContact {
+    int i, j;          // local indices, i owned
+    double n[3];       // unit normal (x_i - x_j)/|x_i - x_j|
+    double radi, radj;
+    double fn, mu;     // elastic normal force, friction coefficient
+    double kn, kt;     // stiffnesses of the network (from the settings)
+    double *history;   // the contact's history (for the friction factor)
+    bool counted;      // false for the second copy of a contact (newton off)
+  };
+
+  VibrationNetwork(class LAMMPS *, const VibrationNetworkSettings &, const std::string &command);
+  ~VibrationNetwork() override;
+
+  // check the pair style and the atom style; call from init()
+  void init();
+
+  // walk the contacts of the group, gather them to rank 0 and build the
+  // network there; marker_groupbit selects grains whose index lists
+  // marked_grains() returns on rank 0 (the source, or fixed atoms)
+  void build(int groupbit, int marker_groupbit);
+
+  const std::vector<LocalContact> &local_contacts() const { return contacts; }
+  bigint ncontacts_total() const { return ncontacts_all; }
+  bigint ngrains_total() const { return ngrains_all; }
+
+  // rank 0 only
+  const Acoustic::ContactNetwork &network() const { return *net; }
+  const std::vector<int> &marked_grains() const { return marked; }
+  const std::vector<tagint> &grain_tags() const { return tags_all; }
+
+  // rank 0 holds one complex value per network DOF (grain by grain); each
+  // owned atom of the group receives those of its grain in out[i] as
+  // (re, im) pairs, 2 dofs_per_grain() numbers; atoms outside the group get zeros
+  void scatter(const Eigen::VectorXcd &values, double **out, int groupbit);
+
+  PairGranularAcoustic *pair() const { return pair_; }
+  int dofs_per_grain() const;
+
+ private:
+  VibrationNetworkSettings settings;
+  std::string command;
+  PairGranularAcoustic *pair_;
+
+  std::vector<LocalContact> contacts;
+  bigint ncontacts_all, ngrains_all;
+
+  // rank 0: the network, tags of its grains (sorted), marked grains, and the
+  // order in which each processor sent its grains (for scatter)
+  std::unique_ptr<Acoustic::ContactNetwork> net;
+  std::vector<tagint> tags_all;
+  std::vector<int> marked;
+  std::vector<int> sent_counts;
+  std::vector<int> sent_grain_index;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

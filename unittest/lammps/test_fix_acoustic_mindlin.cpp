@@ -1,0 +1,528 @@
+// Integration tests of fix acoustic/mindlin: the amplitudes it computes equal
+// the steady response of the DEM itself to a vibrating base (lock-in), the
+// Mindlin law through LAMMPS, 1 vs 2 ranks, restart, frequency 0, a singular
+// solve, outputs, and the errors of bad input.
+#include "lammps_fixture.h"
+
+#include "acoustic_dynamical_matrix.h"
+#include "acoustic_vibration_modes.h"
+#include "atom.h"
+#include "exceptions.h"
+#include "fix.h"
+#include "group.h"
+#include "modify.h"
+#include "vibration_network.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using AcousticTest::ContactKey;
+using AcousticTest::LammpsInstance;
+
+namespace {
+
+LAMMPS_NS::Fix *find_fix(LammpsInstance &L, const char *id)
+{
+  const int ifix = L.lmp->modify->find_fix(id);
+  EXPECT_GE(ifix, 0) << "no fix " << id;
+  return (ifix >= 0) ? L.lmp->modify->fix[ifix] : nullptr;
+}
+
+std::string fmt_double(double v)
+{
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.17g", v);
+  return buf;
+}
+
+// A 2D hexagonal crystal of equal discs, 6 rows on a row of base grains,
+// periodic along x, every contact preloaded by a slight overlap, settled under
+// gravity.  Hooke normal springs: stiffness pair is the exact linearisation.
+std::string crystal_deck(const std::string &tangential)
+{
+  return "units lj\ndimension 2\natom_style sphere\nboundary p fm p\ncomm_modify vel yes\n"
+         "lattice hex 1.1547005383792517\n"    // nearest neighbour distance 1
+         "region box block 0 8 0 5 -0.5 0.5\ncreate_box 2 box\n"
+         "region base block INF INF -0.1 0.1 INF INF units box\n"
+         "region layer block INF INF 0.5 5.3 INF INF units box\n"
+         "create_atoms 2 region base\ncreate_atoms 1 region layer\n"
+         "group base type 2\ngroup grains type 1\n"
+         "set group all diameter 1.002\nset group all density 1.0\n"
+         "pair_style granular/acoustic\n"
+         "pair_coeff * * hooke 1e4 150 damping mass_velocity tangential " + tangential + "\n"
+         "fix integrate grains nve/sphere\nfix plane all enforce2d\n"
+         "fix grav grains gravity 1.0 vector 0 -1 0\n"
+         "timestep 1e-3\nneighbor 0.2 bin\nneigh_modify delay 0 every 1 check yes\nthermo 0\n"
+         "run 20000\n";
+}
+
+// lowest non-zero eigenfrequency of the network with the base clamped
+double lowest_frequency(LammpsInstance &L, const std::string &model)
+{
+  LAMMPS_NS::VibrationNetworkSettings settings;
+  settings.model = Acoustic::contact_model_from_name(model);
+  LAMMPS_NS::VibrationNetwork net(L.lmp, settings, "test");
+  net.init();
+  const int all = L.lmp->group->bitmask[L.lmp->group->find("all")];
+  const int base = L.lmp->group->bitmask[L.lmp->group->find("base")];
+  net.build(all, base);
+  const auto &network = net.network();
+  std::vector<int> fixed;
+  for (int g : net.marked_grains())
+    for (int k = 0; k < network.dofs_per_grain(); k++) fixed.push_back(network.dof(g, k));
+  Acoustic::DynamicalMatrix D(network.stiffness_matrix(), network.mass_diagonal(), fixed,
+                              network.dofs_per_grain());
+  Acoustic::VibrationModes modes = Acoustic::dense_vibration_modes(D, false);
+  EXPECT_EQ(modes.zero_modes, 0) << "the crystal should have no floppy mode";
+  return modes.frequencies[modes.zero_modes];
+}
+
+// ---------------------------------------------------------------------------
+// 1. the fix's amplitudes are the DEM's own steady response to a vibrating base
+
+// Relax the crystal, drive its base vertically with amplitude A (ramped up over
+// 10 periods), and return, per atom ID t, the lock-in sums <dx cos>, <dx sin>,
+// <dy cos>, <dy sin> over the last 20 of 60 periods (entries 4t .. 4t+3).
+std::vector<double> lock_in(const std::string &tangential, int steps_per_period, double dt,
+                            double A, int natoms)
+{
+  LammpsInstance L;
+  L.commands(crystal_deck(tangential));
+  const int nperiods = 60, nlock = 20, nramp = 10;
+  const int nsteps = nperiods * steps_per_period, ramp = nramp * steps_per_period;
+  const double omega = 2.0 * M_PI / (steps_per_period * dt);
+  L.commands("pair_coeff * * hooke 1e4 4 damping mass_velocity tangential " + tangential + "\n"
+             "reset_timestep 0\ntimestep " + fmt_double(dt) + "\n"
+             "compute dsp all displace/atom\n"
+             "variable ph equal 2.0*PI*step/" + std::to_string(steps_per_period) + "\n"
+             "variable ramp equal (step<" + std::to_string(ramp) + ")*step/" + std::to_string(ramp) +
+             "+(step>=" + std::to_string(ramp) + ")\n"
+             "variable dy equal " + fmt_double(A) + "*v_ramp*sin(v_ph)\n"
+             "variable vy equal " + fmt_double(A * omega) + "*v_ramp*cos(v_ph)\n"
+             // a NULL displacement would let fix move integrate that coordinate: hold x
+             "variable zero equal 0.0\n"
+             "fix shake base move variable v_zero v_dy NULL v_zero v_vy NULL units box\n"
+             "variable xc atom c_dsp[1]*cos(v_ph)\nvariable xs atom c_dsp[1]*sin(v_ph)\n"
+             "variable yc atom c_dsp[2]*cos(v_ph)\nvariable ys atom c_dsp[2]*sin(v_ph)\n"
+             "fix lock all ave/atom 1 " + std::to_string(nlock * steps_per_period) + " " +
+             std::to_string(nsteps) + " v_xc v_xs v_yc v_ys\n");
+  L.command("run " + std::to_string(nsteps));
+  std::vector<double> sums(4 * (natoms + 1), 0.0);
+  LAMMPS_NS::Fix *lock = find_fix(L, "lock");
+  if (!lock) return sums;
+  for (int i = 0; i < L.lmp->atom->nlocal; i++)
+    for (int k = 0; k < 4; k++) sums[4 * L.lmp->atom->tag[i] + k] = lock->array_atom[i][k];
+  return sums;
+}
+
+struct ResponseCase {
+  const char *model;
+  const char *tangential;
+};
+
+void PrintTo(const ResponseCase &rc, std::ostream *os) { *os << rc.model; }
+
+class LinearResponse : public ::testing::TestWithParam<ResponseCase> {};
+
+TEST_P(LinearResponse, MatchesDrivenDemByLockIn)
+{
+  const ResponseCase rc = GetParam();
+  LammpsInstance L;
+  L.commands(crystal_deck(rc.tangential));
+
+  const double fmin = lowest_frequency(L, rc.model);
+  const double f = 0.6 * fmin;
+  const double period = 1.0 / f;
+  // an integer number of steps per period, with a step no larger than the relaxation's
+  const int steps_per_period = static_cast<int>(std::ceil(period / 1e-3));
+  const double dt = period / steps_per_period;
+  const double A = 1e-7;    // drive amplitude, far below the overlaps (~1e-3)
+
+  // the fix at the equilibrium: U0 |q| per translation
+  L.command("fix ac all acoustic/mindlin 1000000 frequency " + fmt_double(f) + " amplitude " +
+            fmt_double(A) + " source base stiffness pair model " + rc.model);
+  L.command("run 0");
+  LAMMPS_NS::Fix *fix = find_fix(L, "ac");
+  ASSERT_NE(fix, nullptr);
+  const int natoms = static_cast<int>(L.natoms());
+  std::vector<double> predicted(2 * (natoms + 1), 0.0);
+  for (int i = 0; i < L.lmp->atom->nlocal; i++)
+    for (int k = 0; k < 2; k++) predicted[2 * L.lmp->atom->tag[i] + k] = fix->array_atom[i][k];
+  EXPECT_LT(fix->compute_vector(4), 1e-10) << "relative residual of the solve";
+  L.command("unfix ac");
+
+  // the DEM from the same equilibrium, with the base driven at f and without
+  // drive: the difference of the two lock-ins is the response to the drive,
+  // free of the slow relaxation the packing may still have
+  std::vector<double> driven = lock_in(rc.tangential, steps_per_period, dt, A, natoms);
+  std::vector<double> still = lock_in(rc.tangential, steps_per_period, dt, 0.0, natoms);
+  std::vector<double> measured(2 * (natoms + 1), 0.0);
+  for (int t = 1; t <= natoms; t++)
+    for (int k = 0; k < 2; k++) {
+      const double c = driven[4 * t + 2 * k] - still[4 * t + 2 * k];
+      const double s = driven[4 * t + 2 * k + 1] - still[4 * t + 2 * k + 1];
+      measured[2 * t + k] = 2.0 * std::sqrt(c * c + s * s);
+    }
+
+  double max_pred = 0.0, max_err = 0.0, worst_ratio = 1.0;
+  if (getenv("ACOUSTIC_TEST_VERBOSE"))
+    for (int t = 1; t <= natoms; t++)
+      std::printf("atom %d: fix %.4g %.4g  DEM %.4g %.4g\n", t, predicted[2 * t] / A,
+                  predicted[2 * t + 1] / A, measured[2 * t] / A, measured[2 * t + 1] / A);
+  for (int t = 1; t <= natoms; t++)
+    for (int k = 0; k < 2; k++) {
+      max_pred = std::max(max_pred, predicted[2 * t + k]);
+      max_err = std::max(max_err, std::fabs(predicted[2 * t + k] - measured[2 * t + k]));
+    }
+  for (int t = 1; t <= natoms; t++)    // the vertical response of every grain, relative
+    if (predicted[2 * t + 1] > 0.2 * max_pred)
+      worst_ratio = std::max(worst_ratio, std::max(measured[2 * t + 1] / predicted[2 * t + 1],
+                                                   predicted[2 * t + 1] / measured[2 * t + 1]));
+  std::printf("[ model %s ] f = %.4g (0.6 f_min), max |q| = %.4g A, max |DEM - fix| = %.3g of it, "
+              "worst ratio of vertical amplitudes %.4f\n",
+              rc.model, f, max_pred / A, max_err / max_pred, worst_ratio);
+  ASSERT_GT(max_pred, 1.05 * A) << "the response should differ from a rigid motion";
+  EXPECT_LT(max_err, 0.02 * max_pred);
+  EXPECT_LT(worst_ratio, 1.02);
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, LinearResponse,
+                         ::testing::Values(ResponseCase{"normal", "linear_nohistory 0.0 0.5"},
+                                           ResponseCase{"full", "linear_history 8e3 1.0 10.0"}),
+                         [](const ::testing::TestParamInfo<ResponseCase> &info) {
+                           return std::string(info.param.model);
+                         });
+
+// ---------------------------------------------------------------------------
+// 2. the Mindlin law through LAMMPS, outputs, frequency 0
+
+// a wider crystal of Hertz grains with friction, settled under gravity
+std::string layer_deck(const std::string &newton = "on")
+{
+  return "units lj\ndimension 2\natom_style sphere\nboundary p fm p\ncomm_modify vel yes\n"
+         "newton " + newton + "\nprocessors * 1 1\n"
+         "lattice hex 1.1547005383792517\n"
+         "region box block 0 16 0 5 -0.5 0.5\ncreate_box 2 box\n"
+         "region base block INF INF -0.1 0.1 INF INF units box\n"
+         "region layer block INF INF 0.5 5.3 INF INF units box\n"
+         "create_atoms 2 region base\ncreate_atoms 1 region layer\n"
+         "group base type 2\ngroup grains type 1\n"
+         "set group all diameter 1.002\nset group all density 1.0\n"
+         "pair_style granular/acoustic\n"
+         "pair_coeff * * hertz/material 1e5 0.5 0.3 tangential mindlin NULL 1.0 0.5\n"
+         "fix integrate grains nve/sphere\nfix plane all enforce2d\n"
+         "fix grav grains gravity 1.0 vector 0 -1 0\n"
+         "timestep 1e-3\nneighbor 0.2 bin\nneigh_modify delay 0 every 1 check yes\nthermo 0\n"
+         "run 3000\n";
+}
+
+TEST(FixMindlinLaw, LocalArrayFollowsPaperClosedForm)
+{
+  // stiffness hertz, eta = 2/7, C_mu = 1: mu*/mu = 1 - 3 U0 kappa^(2/3) |P dq| / (7 mu f_n^(2/3))
+  // which with k_n = 3/2 kappa^(2/3) f_n^(1/3) and U_t = U0 |P dq| is 1 - (2/7) k_n U_t / (mu f_n)
+  LammpsInstance L;
+  L.commands(layer_deck());
+  L.command("fix ac all acoustic/mindlin 100 frequency 3.0 amplitude 5e-4 source base "
+            "stiffness hertz 1e5 0.3 kappa_scale 2.0");
+  L.command("run 0");
+  LAMMPS_NS::Fix *fix = find_fix(L, "ac");
+  ASSERT_NE(fix, nullptr);
+  const int nrows = fix->size_local_rows;
+  ASSERT_GT(nrows, 50);
+  const double mu = 0.5;
+  double sum = 0.0, minimum = 1.0;
+  int reduced = 0, weak = 0;
+  for (int r = 0; r < nrows; r++) {
+    const double *row = fix->array_local[r];
+    const double fn = row[2], kn = row[3], ut = row[4], s = row[5];
+    ASSERT_TRUE(std::isfinite(s));
+    const double expected = std::min(1.0, std::max(0.0, 1.0 - (2.0 / 7.0) * kn * ut / (mu * fn)));
+    EXPECT_NEAR(s, expected, 1e-12) << "contact " << row[0] << "-" << row[1];
+    // k_n of stiffness hertz with kappa_scale: 3/2 kappa^(2/3) f_n^(1/3) (checked on one contact)
+    sum += s;
+    minimum = std::min(minimum, s);
+    reduced += (s < 1.0);
+    weak += (s < 0.5);
+  }
+  EXPECT_GT(reduced, nrows / 4) << "the vibration should reduce friction on many contacts";
+  EXPECT_DOUBLE_EQ(fix->compute_vector(0), nrows);
+  EXPECT_NEAR(fix->compute_vector(1), sum / nrows, 1e-12);
+  EXPECT_DOUBLE_EQ(fix->compute_vector(2), minimum);
+  EXPECT_NEAR(fix->compute_vector(3), double(weak) / nrows, 1e-12);
+
+  // the factors are in the contact history, where the pair style reads them
+  std::map<ContactKey, double> factors = AcousticTest::friction_factors(L);
+  for (int r = 0; r < nrows; r++) {
+    const double *row = fix->array_local[r];
+    const ContactKey key(std::min<long>(row[0], row[1]), std::max<long>(row[0], row[1]));
+    ASSERT_TRUE(factors.count(key));
+    EXPECT_NEAR(factors[key], row[5], 1e-15);
+  }
+}
+
+TEST(FixMindlinLaw, FrequencyZeroSetsEveryFactorToOne)
+{
+  LammpsInstance L;
+  L.commands(layer_deck());
+  L.command("fix ac all acoustic/mindlin 100 frequency 3.0 amplitude 5e-4 source base");
+  L.command("run 0");
+  int reduced = 0;
+  for (const auto &kv : AcousticTest::friction_factors(L)) reduced += (kv.second < 1.0);
+  ASSERT_GT(reduced, 10);
+  L.command("unfix ac");
+  L.command("fix ac all acoustic/mindlin 100 frequency 0 amplitude 5e-4 source base");
+  L.command("run 0");
+  for (const auto &kv : AcousticTest::friction_factors(L)) EXPECT_EQ(kv.second, 1.0);
+}
+
+// ---------------------------------------------------------------------------
+// 3. 1 vs 2 ranks, restart
+
+TEST(FixParallel, OneAndTwoRanksGiveTheSameFactors)
+{
+  // the same packing (written once by rank 0 alone) read by rank 0 alone and
+  // by every rank together (2 under mpirun -np 2); the factors of the solve
+  // at setup must agree contact by contact
+  const std::string file = "fix_acoustic_ranks.restart";
+  const std::string fix = "comm_modify vel yes\nfix integrate grains nve/sphere\n"
+                          "fix plane all enforce2d\nneighbor 0.2 bin\nthermo 0\n"
+                          "fix ac all acoustic/mindlin 50 frequency 3.0 amplitude 5e-4 source base "
+                          "stiffness hertz 1e5 0.3 model full damping 0.05\nrun 0\n";
+  std::map<ContactKey, double> serial;
+  std::vector<double> packed;
+  if (AcousticTest::mpi_rank() == 0) {
+    {
+      LammpsInstance W(MPI_COMM_SELF);
+      W.commands(layer_deck());
+      W.command("write_restart " + file);
+    }
+    LammpsInstance S(MPI_COMM_SELF);
+    S.command("read_restart " + file);
+    S.commands(fix);
+    serial = AcousticTest::friction_factors(S);
+    for (const auto &kv : serial) {
+      packed.push_back(kv.first.first);
+      packed.push_back(kv.first.second);
+      packed.push_back(kv.second);
+    }
+  }
+  int n = static_cast<int>(packed.size());
+  MPI_Bcast(&n, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  packed.resize(n);
+  MPI_Bcast(packed.data(), n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  serial.clear();
+  for (int k = 0; k < n; k += 3) serial[ContactKey(long(packed[k]), long(packed[k + 1]))] = packed[k + 2];
+
+  LammpsInstance P;
+  P.command("read_restart " + file);
+  P.commands(fix);
+  std::map<ContactKey, double> parallel = AcousticTest::friction_factors(P);
+  ASSERT_EQ(parallel.size(), serial.size());
+  int reduced = 0;
+  double maxdiff = 0.0;
+  for (const auto &kv : serial) {
+    ASSERT_TRUE(parallel.count(kv.first)) << kv.first.first << "-" << kv.first.second;
+    maxdiff = std::max(maxdiff, std::fabs(parallel[kv.first] - kv.second));
+    reduced += (kv.second < 1.0);
+  }
+  if (AcousticTest::mpi_rank() == 0)
+    std::printf("[ %d ranks ] %zu contacts, %d with reduced friction, max |s(1) - s(N)| = %.3g\n",
+                AcousticTest::mpi_size(), serial.size(), reduced, maxdiff);
+  EXPECT_GT(reduced, 10);
+  EXPECT_LE(maxdiff, 1e-8);
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (AcousticTest::mpi_rank() == 0) std::remove(file.c_str());
+}
+
+TEST(FixParallel, RestartKeepsTheFactors)
+{
+  const std::string file = "fix_acoustic_restart.bin";
+  std::map<ContactKey, double> before;
+  {
+    LammpsInstance L;
+    L.commands(layer_deck("off"));
+    L.commands("fix ac all acoustic/mindlin 40 frequency 3.0 amplitude 5e-4 source base\n"
+               "run 100\n");
+    before = AcousticTest::friction_factors(L);
+    L.command("write_restart " + file);
+  }
+  int reduced = 0;
+  for (const auto &kv : before) reduced += (kv.second < 1.0);
+  ASSERT_GT(reduced, 10);
+
+  // the factors come back with the contacts, without the fix
+  LammpsInstance L;
+  L.command("read_restart " + file);
+  L.commands("comm_modify vel yes\nfix integrate grains nve/sphere\nfix plane all enforce2d\n"
+             "neighbor 0.2 bin\nneigh_modify delay 0 every 1 check yes\nthermo 0\nrun 0\n");
+  std::map<ContactKey, double> after = AcousticTest::friction_factors(L);
+  ASSERT_EQ(after.size(), before.size());
+  for (const auto &kv : before) {
+    ASSERT_TRUE(after.count(kv.first));
+    // newton off: a contact across the periodic boundary has two copies, equal to
+    // the rounding of the image coordinates; either may be the one listed
+    EXPECT_NEAR(after[kv.first], kv.second, 1e-12) << kv.first.first << "-" << kv.first.second;
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (AcousticTest::mpi_rank() == 0) std::remove(file.c_str());
+}
+
+// ---------------------------------------------------------------------------
+// 4. a singular solve warns and keeps the factors
+
+TEST(FixSolverFailure, ResonanceWarnsAndKeepsFactors)
+{
+  // one free grain of mass 1 on a base grain: with model normal its vertical
+  // DOF has K - omega^2 M = k - omega^2 = 0 exactly at f = sqrt(k)/(2 pi)
+  const double f = 5.0, omega = 2.0 * M_PI * f, k = omega * omega;
+  LammpsInstance L;
+  L.commands("units lj\ndimension 2\natom_style sphere\nboundary p p p\ncomm_modify vel yes\n"
+             "region box block -3 3 -3 3 -0.5 0.5\ncreate_box 2 box\n"
+             "create_atoms 2 single 0 0 0\ncreate_atoms 1 single 0 0.99 0\n"
+             "set group all diameter 1.0\nset group all mass 1.0\n"
+             "group base type 2\npair_style granular/acoustic\n");
+  L.command("pair_coeff * * hooke " + fmt_double(k) + " 0 tangential linear_history " +
+            fmt_double(k) + " 0 0.5");
+  L.commands("fix plane all enforce2d\nthermo 0\n"
+             "fix ac all acoustic/mindlin 10 frequency 3.0 amplitude 1e-3 source base direction 1 1 0\n"
+             "run 0\n");
+  std::map<ContactKey, double> first = AcousticTest::friction_factors(L);
+  ASSERT_EQ(first.size(), 1u);
+  const double s0 = first.begin()->second;
+  ASSERT_LT(s0, 1.0);
+
+  L.command("log fix_acoustic_warning.log");
+  L.command("unfix ac");
+  L.command("fix ac all acoustic/mindlin 10 frequency " + fmt_double(f) +
+            " amplitude 1e-3 source base direction 1 1 0");
+  L.command("run 0");
+  L.command("log none");
+  std::map<ContactKey, double> second = AcousticTest::friction_factors(L);
+  ASSERT_EQ(second.size(), 1u);
+  EXPECT_EQ(second.begin()->second, s0) << "the failed solve must keep the previous factor";
+  std::ifstream log("fix_acoustic_warning.log");
+  std::stringstream text;
+  text << log.rdbuf();
+  EXPECT_NE(text.str().find("WARNING: fix acoustic/mindlin: the Helmholtz solve at f = 5 failed"),
+            std::string::npos)
+      << text.str();
+  std::remove("fix_acoustic_warning.log");
+}
+
+// ---------------------------------------------------------------------------
+// 5. errors
+
+struct BadFix {
+  const char *name;
+  const char *command;
+  const char *message;
+};
+
+void PrintTo(const BadFix &b, std::ostream *os) { *os << b.name; }
+
+class FixErrors : public ::testing::TestWithParam<BadFix> {};
+
+TEST_P(FixErrors, ClearError)
+{
+  const BadFix bad = GetParam();
+  LammpsInstance L;
+  L.commands("units lj\natom_style sphere\ncomm_modify vel yes\n"
+             "region box block 0 4 0 4 0 4\ncreate_box 2 box\n"
+             "create_atoms 2 single 1 1 1\ncreate_atoms 1 single 1 1 1.9\n"
+             "group base type 2\ngroup empty type 3\ngroup grains type 1\n"
+             "pair_style granular/acoustic\n"
+             "pair_coeff * * hooke 1000 0.5 tangential linear_history 800 0.5 0.5\n");
+  try {
+    L.commands(bad.command);
+    FAIL() << "no error for: " << bad.command;
+  } catch (LAMMPS_NS::LAMMPSException &e) {
+    EXPECT_NE(std::string(e.what()).find(bad.message), std::string::npos) << "message was: " << e.what();
+  }
+}
+
+const BadFix kBadFixes[] = {
+    {"too_few_args", "fix ac all acoustic/mindlin 10 frequency 5", "expected fix ID group-ID acoustic/mindlin N"},
+    {"bad_every", "fix ac all acoustic/mindlin 0 frequency 5 amplitude 1e-3 source base", "N must be > 0"},
+    {"misspelt_frequency", "fix ac all acoustic/mindlin 10 freq 5 amplitude 1e-3 source base",
+     "expected 'frequency' as argument 5, got 'freq'"},
+    {"negative_frequency", "fix ac all acoustic/mindlin 10 frequency -5 amplitude 1e-3 source base",
+     "frequency must be >= 0"},
+    {"negative_amplitude", "fix ac all acoustic/mindlin 10 frequency 5 amplitude -1e-3 source base",
+     "amplitude must be >= 0"},
+    {"missing_source_group", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source floor",
+     "source group floor does not exist"},
+    {"empty_source", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source empty\nrun 0",
+     "source group empty has no atom in the fix group"},
+    {"source_outside_group", "fix ac grains acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base\nrun 0",
+     "the source grains must belong to the fix group"},
+    {"unknown_keyword", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base loud yes",
+     "unknown keyword loud"},
+    {"zero_direction", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base direction 0 0 0",
+     "direction must not be the zero vector"},
+    {"oblique_normal_mode",
+     "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base direction 1 0 1 mode normal",
+     "mode normal prescribes one Cartesian component"},
+    {"bad_mode", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base mode some",
+     "mode must be 'all' or 'normal'"},
+    {"bad_stiffness", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base stiffness soft",
+     "stiffness must be 'pair' or 'hertz E nu'"},
+    {"hertz_bad_modulus",
+     "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base stiffness hertz -1 0.3",
+     "Young's modulus E > 0"},
+    {"hertz_missing_values", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base stiffness hertz 1e9",
+     "keyword stiffness needs 3 value(s)"},
+    {"bad_kappa_scale",
+     "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base kappa_scale 0",
+     "kappa_scale must be > 0"},
+    {"negative_ratio", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base ratio -1",
+     "ratio k_t/k_n must be >= 0"},
+    {"negative_cmu", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base cmu -1",
+     "cmu must be >= 0"},
+    {"bad_mu_min", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base mu_min 1.5",
+     "mu_min must be in [0, 1]"},
+    {"bad_model", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base model rigid",
+     "rigid"},
+    {"negative_damping", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base damping -0.1",
+     "damping ratio must be >= 0"},
+    {"unknown_solver", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base solver magic",
+     "magic"},
+    {"ldlt_with_damping",
+     "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base damping 0.1 solver ldlt",
+     "solver ldlt handles undamped"},
+    {"wrong_pair_style",
+     "pair_style granular\npair_coeff * * hooke 1000 0.5 tangential linear_history 800 0.5 0.5\n"
+     "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base\nrun 0",
+     "requires pair_style granular/acoustic"},
+};
+
+INSTANTIATE_TEST_SUITE_P(BadInput, FixErrors, ::testing::ValuesIn(kBadFixes),
+                         [](const ::testing::TestParamInfo<BadFix> &info) {
+                           return std::string(info.param.name);
+                         });
+
+TEST(FixErrors2D, DirectionOutOfPlane)
+{
+  LammpsInstance L;
+  L.commands("units lj\ndimension 2\natom_style sphere\ncomm_modify vel yes\n"
+             "region box block 0 4 0 4 -0.5 0.5\ncreate_box 2 box\ngroup base type 2\n"
+             "pair_style granular/acoustic\n"
+             "pair_coeff * * hooke 1000 0.5 tangential linear_history 800 0.5 0.5\n");
+  try {
+    L.command("fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base direction 0 1 1");
+    FAIL() << "out-of-plane direction accepted in 2D";
+  } catch (LAMMPS_NS::LAMMPSException &e) {
+    EXPECT_NE(std::string(e.what()).find("in 2D the direction must lie in the xy plane"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}    // namespace
