@@ -63,18 +63,19 @@ ContactNetwork::ContactNetwork(int dimension, ContactModel model, std::vector<Gr
   const int ngrains = num_grains();
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     const Contact &c = contacts_[k];
-    const std::string which = "contact network: contact " + std::to_string(k) + " ";
+    // built only when a check fails: this loop runs over every contact
+    auto which = [k]() { return "contact network: contact " + std::to_string(k) + " "; };
     if (c.i < 0 || c.i >= ngrains || c.j < 0 || c.j >= ngrains)
-      throw SolverError(which + "refers to a grain outside 0.." + std::to_string(ngrains - 1));
-    if (c.i == c.j) throw SolverError(which + "joins grain " + std::to_string(c.i) + " to itself");
+      throw SolverError(which() + "refers to a grain outside 0.." + std::to_string(ngrains - 1));
+    if (c.i == c.j) throw SolverError(which() + "joins grain " + std::to_string(c.i) + " to itself");
     if (!c.normal.allFinite() || std::abs(c.normal.norm() - 1.0) > 1e-8)
-      throw SolverError(which + "has a normal that is not a unit vector");
+      throw SolverError(which() + "has a normal that is not a unit vector");
     if (dimension_ == 2 && std::abs(c.normal.z()) > 1e-12)
-      throw SolverError(which + "has a normal with a z component in a 2D network");
+      throw SolverError(which() + "has a normal with a z component in a 2D network");
     if (!finite_nonnegative(c.kn) || !finite_nonnegative(c.kt))
-      throw SolverError(which + "has a stiffness that is negative or not finite");
+      throw SolverError(which() + "has a stiffness that is negative or not finite");
     if (!finite_nonnegative(c.cn) || !finite_nonnegative(c.ct))
-      throw SolverError(which + "has a dashpot coefficient that is negative or not finite");
+      throw SolverError(which() + "has a dashpot coefficient that is negative or not finite");
   }
 }
 
@@ -122,11 +123,20 @@ Eigen::Vector3cd contact_point_displacement(int dimension, ContactModel model,
     throw SolverError("contact point displacement: each grain needs " + std::to_string(ndof) +
                       " DOF values, got " + std::to_string(q_i.size()) + " and " +
                       std::to_string(q_j.size()));
-  Eigen::VectorXcd local(2 * ndof);
-  local.head(ndof) = q_i;
-  local.tail(ndof) = q_j;
-  return contact_jacobian(dimension, model, normal, radius_i, radius_j).cast<std::complex<double>>() *
-      local;
+  // Delta = (u_i - u_j) + n x (r_i theta_i + r_j theta_j), as contact_jacobian()
+  Eigen::Vector3cd delta = Eigen::Vector3cd::Zero();
+  delta.head(dimension) = q_i.head(dimension) - q_j.head(dimension);
+  if (model == ContactModel::Full) {
+    Eigen::Vector3cd theta = Eigen::Vector3cd::Zero();
+    if (dimension == 2)
+      theta.z() = radius_i * q_i[2] + radius_j * q_j[2];
+    else
+      theta = radius_i * q_i.segment<3>(3) + radius_j * q_j.segment<3>(3);
+    delta.x() += normal.y() * theta.z() - normal.z() * theta.y();
+    delta.y() += normal.z() * theta.x() - normal.x() * theta.z();
+    delta.z() += normal.x() * theta.y() - normal.y() * theta.x();
+  }
+  return delta;
 }
 
 Eigen::MatrixXd ContactNetwork::contact_jacobian(const Contact &c) const

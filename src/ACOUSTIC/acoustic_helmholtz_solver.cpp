@@ -7,6 +7,7 @@
 #include "acoustic_solver_error.h"
 
 #include <Eigen/CholmodSupport>
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/UmfPackSupport>
 
 #include <algorithm>
@@ -36,7 +37,15 @@ template <typename Matrix> class UmfpackLU : public Eigen::UmfPackLU<Matrix> {
 // Real symmetric LDL^T (CHOLMOD simplicial, lower triangle), silent on zero pivots.
 class CholmodLDLT : public Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> {
  public:
-  CholmodLDLT() { this->cholmod().print = 0; }
+  CholmodLDLT()
+  {
+    this->cholmod().print = 0;
+    // one fill-reducing ordering (AMD) instead of CHOLMOD's default search over
+    // AMD, METIS and NESDIS: the analysis is redone whenever contacts change
+    this->cholmod().nmethods = 1;
+    this->cholmod().method[0].ordering = CHOLMOD_AMD;
+    this->cholmod().postorder = 1;
+  }
 };
 
 // Sparsity pattern of the last matrix a factorisation object was analysed for.
@@ -187,6 +196,16 @@ struct HelmholtzSolver::Factorisations {
   SparsityPattern lu_real_pattern;
   UmfpackLU<Eigen::SparseMatrix<Complex>> lu_complex;
   SparsityPattern lu_complex_pattern;
+  // Eigen's UMFPACK wrapper keeps a reference to the factorised matrix (its
+  // solves refine with it): the matrices live here as long as their factors
+  Eigen::SparseMatrix<double> lu_real_matrix;
+  Eigen::SparseMatrix<Complex> lu_complex_matrix;
+
+  // the factorisation of the last successful solve, its free DOFs and solution
+  enum Kind { NONE, LDLT, LU_REAL, LU_COMPLEX };
+  Kind last = NONE;
+  std::vector<int> last_free_dofs;
+  Eigen::VectorXcd last_x;
 };
 
 namespace {
@@ -220,6 +239,63 @@ Attempt factorise_and_solve(Solver &solver, SparsityPattern &pattern, const Eige
   const double residual_norm = (multiply(a, attempt.x) - rhs).norm();
   attempt.residual = residual_norm / rhs.norm();
   if (!std::isfinite(attempt.residual)) attempt.residual = std::numeric_limits<double>::infinity();
+  timings.solve += seconds_since(start);
+  return attempt;
+}
+
+// A factorisation of an earlier matrix used as the preconditioner of BiCGSTAB
+// (the interface Eigen's iterative solvers expect of a preconditioner).
+template <typename Scalar, typename Factor> class EarlierFactorisation {
+ public:
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, 1> Vector;
+  EarlierFactorisation() = default;
+  template <typename MatrixType> explicit EarlierFactorisation(const MatrixType &) {}
+  template <typename MatrixType> EarlierFactorisation &analyzePattern(const MatrixType &) { return *this; }
+  template <typename MatrixType> EarlierFactorisation &factorize(const MatrixType &) { return *this; }
+  template <typename MatrixType> EarlierFactorisation &compute(const MatrixType &) { return *this; }
+  template <typename Rhs> Vector solve(const Rhs &b) const
+  {
+    const Vector rhs = b;
+    return factor->solve(rhs);
+  }
+  Eigen::ComputationInfo info() const { return Eigen::Success; }
+  const Factor *factor = nullptr;
+};
+
+// Solve a x = rhs by BiCGSTAB preconditioned with the factorisation of an
+// earlier matrix, from the earlier solution; a small change of the network
+// converges in a few iterations, each costing two triangular solves.
+template <typename Factor, typename Scalar>
+Attempt iterate_with_earlier_factors(const Factor &factor, const Eigen::SparseMatrix<Scalar> &a,
+                                     const Eigen::VectorXcd &rhs, const Eigen::VectorXcd &guess,
+                                     int max_iterations, double tolerance, SolverTimings &timings)
+{
+  Attempt attempt;
+  const Clock::time_point start = Clock::now();
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Dense;
+  Eigen::BiCGSTAB<Eigen::SparseMatrix<Scalar>, EarlierFactorisation<Scalar, Factor>> bicgstab;
+  bicgstab.preconditioner().factor = &factor;
+  bicgstab.setMaxIterations(max_iterations);
+  bicgstab.setTolerance(tolerance);
+  bicgstab.compute(a);
+  const Dense b = as_columns(rhs, Scalar());
+  const Dense x0 = as_columns(guess, Scalar());
+  Dense x(b.rows(), b.cols());
+  bool converged = true;
+  for (Eigen::Index col = 0; col < b.cols(); ++col) {
+    if (b.col(col).squaredNorm() == 0.0) {
+      x.col(col).setZero();
+      continue;
+    }
+    x.col(col) = bicgstab.solveWithGuess(b.col(col), x0.col(col));
+    converged = converged && bicgstab.info() == Eigen::Success;
+  }
+  if (converged) {
+    attempt.factorised = true;
+    attempt.x = from_columns(x);
+    attempt.residual = (multiply(a, attempt.x) - rhs).norm() / rhs.norm();
+    if (!std::isfinite(attempt.residual)) attempt.residual = std::numeric_limits<double>::infinity();
+  }
   timings.solve += seconds_since(start);
   return attempt;
 }
@@ -313,15 +389,32 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
   Eigen::VectorXcd rhs;
   Attempt attempt;
   bool rhs_zero = false;
+  Factorisations &f = *factors_;
+  // an earlier factorisation can precondition this solve if the free DOFs are the same
+  const bool can_reuse = reuse_ && f.last != Factorisations::NONE && f.last_free_dofs == part.free_dofs;
+  const double reuse_tolerance = 1e-2 * residual_tolerance_;
+  Factorisations::Kind used = Factorisations::NONE;
+  bool iterated = false;
   if (damped) {
     Eigen::SparseMatrix<Complex> a;
     assemble_free_system<Complex>(stiffness, &damping, Complex(0.0, omega), mass, omega, part, prescribed_values, a, rhs);
     timings_.solve += seconds_since(start);
     rhs_zero = rhs.squaredNorm() == 0.0;
     if (nfree > 0 && !rhs_zero) {
-      result.factorisation = "lu";
-      attempt = factorise_and_solve(factors_->lu_complex, factors_->lu_complex_pattern, a, rhs, num_analyses_,
-                                    num_factorisations_, timings_);
+      if (can_reuse && f.last == Factorisations::LU_COMPLEX) {
+        attempt = iterate_with_earlier_factors(f.lu_complex, a, rhs, f.last_x, reuse_iterations_,
+                                               reuse_tolerance, timings_);
+        if (attempt.factorised && attempt.residual <= residual_tolerance_) used = f.last;
+      }
+      iterated = (used != Factorisations::NONE);
+      if (!iterated) {
+        used = Factorisations::LU_COMPLEX;
+        f.lu_complex_matrix = a;
+        attempt = factorise_and_solve(f.lu_complex, f.lu_complex_pattern, f.lu_complex_matrix, rhs,
+                                      num_analyses_, num_factorisations_, timings_);
+      } else {
+        ++num_reuses_;
+      }
     }
   } else {
     Eigen::SparseMatrix<double> a;
@@ -329,20 +422,55 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     timings_.solve += seconds_since(start);
     rhs_zero = rhs.squaredNorm() == 0.0;
     if (nfree > 0 && !rhs_zero) {
-      if (choice_ != LinearSolverChoice::Lu) {
-        result.factorisation = "ldlt";
-        attempt = factorise_and_solve(factors_->ldlt, factors_->ldlt_pattern, a, rhs, num_analyses_,
-                                      num_factorisations_, timings_);
+      if (can_reuse && (f.last == Factorisations::LDLT || f.last == Factorisations::LU_REAL)) {
+        if (f.last == Factorisations::LDLT)
+          attempt = iterate_with_earlier_factors(f.ldlt, a, rhs, f.last_x, reuse_iterations_,
+                                                 reuse_tolerance, timings_);
+        else
+          attempt = iterate_with_earlier_factors(f.lu_real, a, rhs, f.last_x, reuse_iterations_,
+                                                 reuse_tolerance, timings_);
+        if (attempt.factorised && attempt.residual <= residual_tolerance_) used = f.last;
       }
-      const bool ldlt_good = attempt.factorised && attempt.residual <= residual_tolerance_;
-      if (choice_ == LinearSolverChoice::Lu || (choice_ == LinearSolverChoice::Auto && !ldlt_good)) {
-        result.factorisation = "lu";
-        attempt = factorise_and_solve(factors_->lu_real, factors_->lu_real_pattern, a, rhs, num_analyses_,
-                                      num_factorisations_, timings_);
+      iterated = (used != Factorisations::NONE);
+      if (iterated) {
+        ++num_reuses_;
+      } else {
+        if (choice_ != LinearSolverChoice::Lu) {
+          used = Factorisations::LDLT;
+          attempt = factorise_and_solve(f.ldlt, f.ldlt_pattern, a, rhs, num_analyses_, num_factorisations_,
+                                        timings_);
+        }
+        const bool ldlt_good = attempt.factorised && attempt.residual <= residual_tolerance_;
+        if (choice_ == LinearSolverChoice::Lu || (choice_ == LinearSolverChoice::Auto && !ldlt_good)) {
+          used = Factorisations::LU_REAL;
+          f.lu_real_matrix = a;
+          attempt = factorise_and_solve(f.lu_real, f.lu_real_pattern, f.lu_real_matrix, rhs,
+                                        num_analyses_, num_factorisations_, timings_);
+        }
       }
     }
   }
   if (nfree == 0 || rhs_zero) return result;
+  switch (used) {
+    case Factorisations::LDLT:
+      result.factorisation = "ldlt";
+      break;
+    case Factorisations::LU_REAL:
+    case Factorisations::LU_COMPLEX:
+      result.factorisation = "lu";
+      break;
+    default:
+      break;
+  }
+  if (iterated) result.factorisation += " (earlier factors, BiCGSTAB)";
+  // remember a good factorisation and its solution for the next solve
+  if (attempt.factorised && attempt.x.allFinite() && attempt.residual <= residual_tolerance_) {
+    f.last = used;
+    f.last_free_dofs = part.free_dofs;
+    f.last_x = attempt.x;
+  } else {
+    f.last = Factorisations::NONE;
+  }
 
   const std::string where = " (omega = " + std::to_string(omega) + ", " + std::to_string(nfree) +
       " free DOFs, factorisation " + result.factorisation + ")";

@@ -59,7 +59,8 @@ struct HelmholtzSolution {
   Eigen::VectorXcd q;                     // every DOF, prescribed ones included
   SolveStatus status = SolveStatus::Success;
   double relative_residual = 0.0;         // ||A q_F - b|| / ||b||, of the factorisation used
-  std::string factorisation;              // "ldlt", "lu" or "none" (b = 0 or no free DOF)
+  std::string factorisation;              // "ldlt", "lu" or "none" (b = 0 or no free DOF), with
+                                          // " (earlier factors, BiCGSTAB)" when they were reused
   std::string message;                    // explanation when status != Success
   bool ok() const { return status == SolveStatus::Success; }
 };
@@ -87,6 +88,19 @@ class HelmholtzSolver {
                           double omega, const std::vector<int> &prescribed_dofs,
                           const Eigen::VectorXcd &prescribed_values);
 
+  // Reuse of earlier factors: when the free DOFs are those of the last successful
+  // solve (the contact network changed, the grains did not), first try BiCGSTAB
+  // preconditioned with that solve's factorisation, starting from its solution;
+  // factorise only if it does not converge within max_iterations.  Off by default.
+  void set_reuse_factorisation(bool reuse, int max_iterations = 30)
+  {
+    reuse_ = reuse;
+    reuse_iterations_ = max_iterations;
+  }
+  bool reuse_factorisation() const { return reuse_; }
+  // solves answered by BiCGSTAB with earlier factors, since construction
+  long num_reuses() const { return num_reuses_; }
+
   LinearSolverChoice choice() const { return choice_; }
   double residual_tolerance() const { return residual_tolerance_; }
   // Totals since construction: symbolic analyses and numeric factorisations.
@@ -101,6 +115,9 @@ class HelmholtzSolver {
   double residual_tolerance_;
   long num_analyses_ = 0;
   long num_factorisations_ = 0;
+  long num_reuses_ = 0;
+  bool reuse_ = false;
+  int reuse_iterations_ = 30;
   SolverTimings timings_;
   std::unique_ptr<Factorisations> factors_;
 };

@@ -15,9 +15,10 @@ namespace Acoustic {
 
 namespace {
 
-void require(bool condition, const std::string &message)
+// the message is built only when a check fails: these functions run once per contact
+[[noreturn]] void fail(const std::string &message)
 {
-  if (!condition) throw SolverError(message);
+  throw SolverError(message);
 }
 
 bool is_positive_mass(double m)
@@ -29,21 +30,21 @@ bool is_positive_mass(double m)
 
 double hertz_effective_modulus(double youngs_modulus, double poisson_ratio)
 {
-  require(std::isfinite(youngs_modulus) && youngs_modulus > 0.0,
-          "Hertz stiffness: Young's modulus must be positive and finite, got " +
+  if (!(std::isfinite(youngs_modulus) && youngs_modulus > 0.0))
+    fail("Hertz stiffness: Young's modulus must be positive and finite, got " +
               std::to_string(youngs_modulus));
-  require(poisson_ratio > -1.0 && poisson_ratio < 0.5,
-          "Hertz stiffness: Poisson ratio must lie in (-1, 0.5), got " + std::to_string(poisson_ratio));
+  if (!(poisson_ratio > -1.0 && poisson_ratio < 0.5))
+    fail("Hertz stiffness: Poisson ratio must lie in (-1, 0.5), got " + std::to_string(poisson_ratio));
   return youngs_modulus / (2.0 * (1.0 - poisson_ratio * poisson_ratio));
 }
 
 double hertz_effective_radius(double radius_i, double radius_j)
 {
-  require(radius_i > 0.0 && radius_j > 0.0,
-          "Hertz stiffness: grain radii must be positive, got " + std::to_string(radius_i) + " and " +
+  if (!(radius_i > 0.0 && radius_j > 0.0))
+    fail("Hertz stiffness: grain radii must be positive, got " + std::to_string(radius_i) + " and " +
               std::to_string(radius_j));
-  require(std::isfinite(radius_i) || std::isfinite(radius_j),
-          "Hertz stiffness: at most one of the two radii may be infinite (a flat wall)");
+  if (!(std::isfinite(radius_i) || std::isfinite(radius_j)))
+    fail("Hertz stiffness: at most one of the two radii may be infinite (a flat wall)");
   return 1.0 / (1.0 / radius_i + 1.0 / radius_j);
 }
 
@@ -55,21 +56,21 @@ double hertz_kappa(double youngs_modulus, double poisson_ratio, double radius_i,
 
 double hertz_normal_stiffness(double kappa, double normal_force)
 {
-  require(std::isfinite(kappa) && kappa > 0.0,
-          "Hertz stiffness: kappa must be positive and finite, got " + std::to_string(kappa));
-  require(std::isfinite(normal_force),
-          "Hertz stiffness: the normal force is not finite");
+  if (!(std::isfinite(kappa) && kappa > 0.0))
+    fail("Hertz stiffness: kappa must be positive and finite, got " + std::to_string(kappa));
+  if (!(std::isfinite(normal_force)))
+    fail("Hertz stiffness: the normal force is not finite");
   if (normal_force <= 0.0) return 0.0;
   return 1.5 * std::pow(kappa, 2.0 / 3.0) * std::cbrt(normal_force);
 }
 
 double effective_mass(double mass_i, double mass_j)
 {
-  require(is_positive_mass(mass_i) && is_positive_mass(mass_j),
-          "effective mass: grain masses must be positive, got " + std::to_string(mass_i) + " and " +
+  if (!(is_positive_mass(mass_i) && is_positive_mass(mass_j)))
+    fail("effective mass: grain masses must be positive, got " + std::to_string(mass_i) + " and " +
               std::to_string(mass_j));
-  require(std::isfinite(mass_i) || std::isfinite(mass_j),
-          "effective mass: a contact between two infinite (frozen) masses has no dynamics");
+  if (!(std::isfinite(mass_i) || std::isfinite(mass_j)))
+    fail("effective mass: a contact between two infinite (frozen) masses has no dynamics");
   if (!std::isfinite(mass_i)) return mass_j;
   if (!std::isfinite(mass_j)) return mass_i;
   return mass_i * mass_j / (mass_i + mass_j);
@@ -77,20 +78,22 @@ double effective_mass(double mass_i, double mass_j)
 
 double dashpot_coefficient(double damping_ratio, double stiffness, double mass_i, double mass_j)
 {
-  require(std::isfinite(damping_ratio) && damping_ratio >= 0.0,
-          "dashpot: the damping ratio zeta must be >= 0, got " + std::to_string(damping_ratio));
-  require(std::isfinite(stiffness) && stiffness >= 0.0,
-          "dashpot: the contact stiffness must be >= 0 and finite, got " + std::to_string(stiffness));
+  if (!(std::isfinite(damping_ratio) && damping_ratio >= 0.0))
+    fail("dashpot: the damping ratio zeta must be >= 0, got " + std::to_string(damping_ratio));
+  if (!(std::isfinite(stiffness) && stiffness >= 0.0))
+    fail("dashpot: the contact stiffness must be >= 0 and finite, got " + std::to_string(stiffness));
   return 2.0 * damping_ratio * std::sqrt(stiffness * effective_mass(mass_i, mass_j));
 }
 
 double tangential_amplitude(const Eigen::Vector3cd &contact_displacement, const Eigen::Vector3d &normal,
                             double amplitude)
 {
-  require(std::isfinite(amplitude) && amplitude >= 0.0,
-          "tangential amplitude: the vibration amplitude U0 must be >= 0, got " + std::to_string(amplitude));
-  require(std::abs(normal.norm() - 1.0) < 1e-8, "tangential amplitude: the contact normal must be a unit vector");
-  require(contact_displacement.allFinite(), "tangential amplitude: the contact displacement is not finite");
+  if (!(std::isfinite(amplitude) && amplitude >= 0.0))
+    fail("tangential amplitude: the vibration amplitude U0 must be >= 0, got " + std::to_string(amplitude));
+  if (!(std::abs(normal.norm() - 1.0) < 1e-8))
+    fail("tangential amplitude: the contact normal must be a unit vector");
+  if (!(contact_displacement.allFinite()))
+    fail("tangential amplitude: the contact displacement is not finite");
   // dq.n without complex conjugation (Eigen's dot conjugates its left operand, here the real n)
   const Eigen::Vector3cd n = normal.cast<std::complex<double>>();
   const std::complex<double> along = n.dot(contact_displacement);
@@ -101,20 +104,21 @@ double tangential_amplitude(const Eigen::Vector3cd &contact_displacement, const 
 double friction_factor(const MindlinFrictionLaw &law, double tangential_stiffness, double tangential_amplitude,
                        double friction_coefficient, double normal_force)
 {
-  require(std::isfinite(law.cmu) && law.cmu >= 0.0,
-          "friction update: C_mu must be >= 0, got " + std::to_string(law.cmu));
-  require(law.mu_min >= 0.0 && law.mu_min <= 1.0,
-          "friction update: mu_min must lie in [0, 1], got " + std::to_string(law.mu_min));
-  require(std::isfinite(tangential_stiffness) && tangential_stiffness >= 0.0,
-          "friction update: the tangential stiffness must be >= 0 and finite, got " +
+  if (!(std::isfinite(law.cmu) && law.cmu >= 0.0))
+    fail("friction update: C_mu must be >= 0, got " + std::to_string(law.cmu));
+  if (!(law.mu_min >= 0.0 && law.mu_min <= 1.0))
+    fail("friction update: mu_min must lie in [0, 1], got " + std::to_string(law.mu_min));
+  if (!(std::isfinite(tangential_stiffness) && tangential_stiffness >= 0.0))
+    fail("friction update: the tangential stiffness must be >= 0 and finite, got " +
               std::to_string(tangential_stiffness));
-  require(std::isfinite(tangential_amplitude) && tangential_amplitude >= 0.0,
-          "friction update: the tangential amplitude must be >= 0 and finite, got " +
+  if (!(std::isfinite(tangential_amplitude) && tangential_amplitude >= 0.0))
+    fail("friction update: the tangential amplitude must be >= 0 and finite, got " +
               std::to_string(tangential_amplitude));
-  require(std::isfinite(friction_coefficient) && friction_coefficient >= 0.0,
-          "friction update: the friction coefficient must be >= 0 and finite, got " +
+  if (!(std::isfinite(friction_coefficient) && friction_coefficient >= 0.0))
+    fail("friction update: the friction coefficient must be >= 0 and finite, got " +
               std::to_string(friction_coefficient));
-  require(!std::isnan(normal_force), "friction update: the normal force is NaN");
+  if (!(!std::isnan(normal_force)))
+    fail("friction update: the normal force is NaN");
   if (normal_force <= 0.0 || friction_coefficient == 0.0) return 1.0;
   const double reduction = law.cmu * tangential_stiffness * tangential_amplitude / (friction_coefficient * normal_force);
   return std::min(1.0, std::max(law.mu_min, 1.0 - reduction));

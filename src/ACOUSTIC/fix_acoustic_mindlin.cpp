@@ -166,6 +166,8 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
 
   network.reset(new VibrationNetwork(lmp, settings, CMD));
   solver.reset(new Acoustic::HelmholtzSolver(solver_choice));
+  // between two updates few contacts change: precondition with the last factors
+  solver->set_reuse_factorisation(true);
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -267,11 +269,14 @@ void FixAcousticMindlin::solve_on_rank0(bool &ok)
   }
   const double t2 = MPI_Wtime();
   ok = sol.ok();
-  stats[4] = sol.relative_residual;
-  stats[5] += t1 - t0;    // assembly of K, C, M
-  stats[6] = t2 - t1;
-  stats[8] = static_cast<double>(solver->num_analyses());
-  stats[9] = static_cast<double>(solver->num_factorisations());
+  const Acoustic::SolverTimings &timing = solver->last_timings();
+  stats[RESIDUAL] = sol.relative_residual;
+  stats[TIME_ASSEMBLY] = t1 - t0;
+  stats[TIME_FACTORISATION] = timing.analysis + timing.factorisation;
+  stats[TIME_SOLVE] = (t2 - t1) - stats[TIME_FACTORISATION];
+  stats[NANALYSES] = static_cast<double>(solver->num_analyses());
+  stats[NFACTORISATIONS] = static_cast<double>(solver->num_factorisations());
+  stats[NREUSES] = static_cast<double>(solver->num_reuses());
   if (!ok)
     error->warning(FLERR, "{}: the Helmholtz solve at f = {} failed ({}: {}; relative residual "
                           "{:.3g}); keeping the previous friction factors. A frequency on a "
@@ -290,8 +295,8 @@ void FixAcousticMindlin::update_factors()
 {
   const double t0 = MPI_Wtime();
   network->build(groupbit, source_groupbit);
-  stats[5] = MPI_Wtime() - t0;    // walk and gather; rank 0 adds the assembly
-  stats[6] = 0.0;
+  stats[TIME_GATHER] = MPI_Wtime() - t0;
+  stats[TIME_ASSEMBLY] = stats[TIME_FACTORISATION] = stats[TIME_SOLVE] = 0.0;
 
   const int nlocal = atom->nlocal;
   if (frequency > 0.0) {
@@ -302,9 +307,11 @@ void FixAcousticMindlin::update_factors()
       ok = good ? 1 : 0;
     }
     MPI_Bcast(&ok, 1, MPI_INT, 0, world);
-    MPI_Bcast(stats + 4, 3, MPI_DOUBLE, 0, world);
-    MPI_Bcast(stats + 8, 2, MPI_DOUBLE, 0, world);
-    if (!ok) return;
+    MPI_Bcast(stats + RESIDUAL, NREUSES - RESIDUAL + 1, MPI_DOUBLE, 0, world);
+    if (!ok) {
+      stats[TIME_TOTAL] += MPI_Wtime() - t0;
+      return;
+    }
   }
 
   const double t1 = MPI_Wtime();
@@ -382,11 +389,13 @@ void FixAcousticMindlin::update_factors()
   MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, world);
   double global_min = 1.0;
   MPI_Allreduce(&minimum, &global_min, 1, MPI_DOUBLE, MPI_MIN, world);
-  stats[0] = static_cast<double>(network->ncontacts_total());
-  stats[1] = (global[2] > 0.0) ? global[0] / global[2] : 1.0;
-  stats[2] = global_min;
-  stats[3] = (global[2] > 0.0) ? global[1] / global[2] : 0.0;
-  stats[7] = MPI_Wtime() - t1;
+  stats[NCONTACTS] = static_cast<double>(network->ncontacts_total());
+  stats[MEAN_FACTOR] = (global[2] > 0.0) ? global[0] / global[2] : 1.0;
+  stats[MIN_FACTOR] = global_min;
+  stats[WEAK_FRACTION] = (global[2] > 0.0) ? global[1] / global[2] : 0.0;
+  const double t2 = MPI_Wtime();
+  stats[TIME_UPDATE] = t2 - t1;
+  stats[TIME_TOTAL] += t2 - t0;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -50,7 +50,24 @@ class FixAcousticMindlin : public Fix {
   double memory_usage() override;
 
   enum SourceMode { ALL, NORMAL };
-  enum { NVECTOR = 10 };
+  // entries of the global vector (f_ID[k] is entry k-1)
+  enum {
+    NCONTACTS,             // contacts in the network
+    MEAN_FACTOR,           // mean mu*/mu over the contacts
+    MIN_FACTOR,            // smallest mu*/mu
+    WEAK_FRACTION,         // fraction of contacts with mu*/mu < 0.5
+    RESIDUAL,              // relative residual of the last solve
+    TIME_GATHER,           // wall time of the last contact walk and gather
+    TIME_ASSEMBLY,         // ... assembly of K, C, M on rank 0
+    TIME_FACTORISATION,    // ... symbolic analysis and numeric factorisation
+    TIME_SOLVE,            // ... rest of the solve (triangular solves, residual)
+    TIME_UPDATE,           // ... scatter of the amplitudes and friction update
+    NANALYSES,             // symbolic analyses since the fix was defined
+    NFACTORISATIONS,       // numeric factorisations since the fix was defined
+    NREUSES,               // solves done with earlier factors (BiCGSTAB) since then
+    TIME_TOTAL,            // wall time of all updates since the fix was defined
+    NVECTOR
+  };
 
  private:
   double frequency, amplitude;

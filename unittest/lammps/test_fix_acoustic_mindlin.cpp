@@ -157,6 +157,7 @@ TEST_P(LinearResponse, MatchesDrivenDemByLockIn)
   for (int i = 0; i < L.lmp->atom->nlocal; i++)
     for (int k = 0; k < 2; k++) predicted[2 * L.lmp->atom->tag[i] + k] = fix->array_atom[i][k];
   EXPECT_LT(fix->compute_vector(4), 1e-10) << "relative residual of the solve";
+  EXPECT_EQ(fix->compute_vector(10), 1.0) << "one symbolic analysis";
   L.command("unfix ac");
 
   // the DEM from the same equilibrium, with the base driven at f and without

@@ -247,3 +247,31 @@ TEST(ContactNetwork, RejectsInvalidInput)
   const ContactNetwork ok(2, ContactModel::Normal, two, {contact(0, 1, x, 1.0)});
   EXPECT_THROW(ok.contact_displacements(Eigen::VectorXcd::Zero(3)), SolverError);
 }
+
+TEST(ContactNetwork, PointDisplacementEqualsJacobianTimesDofs)
+{
+  // the per-contact shortcut used by the LAMMPS fix against the Jacobian used by the assembly
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int dimension : {2, 3}) {
+    for (ContactModel model : {ContactModel::Normal, ContactModel::Full}) {
+      const int ndof = dofs_per_grain(dimension, model);
+      for (int trial = 0; trial < 5; ++trial) {
+        Eigen::Vector3d n(u(rng), u(rng), dimension == 3 ? u(rng) : 0.0);
+        n.normalize();
+        const double ri = 0.5 + 0.5 * std::abs(u(rng)), rj = 0.5 + 0.5 * std::abs(u(rng));
+        Eigen::VectorXcd qi(ndof), qj(ndof), both(2 * ndof);
+        for (int k = 0; k < ndof; ++k) {
+          qi[k] = std::complex<double>(u(rng), u(rng));
+          qj[k] = std::complex<double>(u(rng), u(rng));
+        }
+        both << qi, qj;
+        const Eigen::Vector3cd expected =
+            contact_jacobian(dimension, model, n, ri, rj).cast<std::complex<double>>() * both;
+        const Eigen::Vector3cd delta = contact_point_displacement(dimension, model, n, ri, rj, qi, qj);
+        EXPECT_LT((delta - expected).norm(), 1e-14) << "dimension " << dimension << " model "
+                                                     << contact_model_name(model);
+      }
+    }
+  }
+}

@@ -285,3 +285,49 @@ TEST(HelmholtzSolver, RejectsInvalidInput)
     EXPECT_NE(std::string(e.what()).find("auto, ldlt, lu"), std::string::npos);
   }
 }
+
+TEST(HelmholtzSolver, EarlierFactorsPreconditionASlightlyChangedNetwork)
+{
+  // undamped (ldlt, lu) and damped (complex lu)
+  for (double c : {0.0, 0.05}) {
+    for (LinearSolverChoice choice : {LinearSolverChoice::Auto, LinearSolverChoice::Lu}) {
+      SCOPED_TRACE(linear_solver_name(choice) + (c > 0.0 ? " damped" : " undamped"));
+      const Source source = chain_source();
+      HelmholtzSolver solver(choice);
+      solver.set_reuse_factorisation(true);
+      const ContactNetwork first = chain(40, 1.0, 2.0, c);
+      HelmholtzSolution sol = solver.solve(first.stiffness_matrix(), first.damping_matrix(),
+                                           first.mass_diagonal(), 1.1, source.dofs, source.values);
+      ASSERT_TRUE(sol.ok());
+      const long factorisations = solver.num_factorisations();
+
+      // one more contact and a slightly stiffer one: solved with the earlier factors
+      std::vector<Contact> contacts = first.contacts();
+      contacts[7].kn *= 1.01;
+      contacts.push_back(Contact{12, 10, Eigen::Vector3d(1, 0, 0), 0.02, 0.0, c > 0 ? 0.001 : 0.0, 0.0});
+      const ContactNetwork second(2, ContactModel::Normal, first.grains(), contacts);
+      sol = solver.solve(second.stiffness_matrix(), second.damping_matrix(), second.mass_diagonal(), 1.1,
+                         source.dofs, source.values);
+      ASSERT_TRUE(sol.ok()) << sol.message;
+      EXPECT_EQ(solver.num_reuses(), 1);
+      EXPECT_EQ(solver.num_factorisations(), factorisations);
+      EXPECT_NE(sol.factorisation.find("earlier factors"), std::string::npos) << sol.factorisation;
+      HelmholtzSolver fresh(choice);
+      const HelmholtzSolution reference = fresh.solve(second.stiffness_matrix(), second.damping_matrix(),
+                                                      second.mass_diagonal(), 1.1, source.dofs, source.values);
+      EXPECT_LT((sol.q - reference.q).norm(), 1e-7 * reference.q.norm());
+      EXPECT_LE(sol.relative_residual, solver.residual_tolerance());
+
+      // a very different network: the iteration gives up and the matrix is factorised
+      const ContactNetwork third = chain(40, 1.0, 9.0, c);
+      sol = solver.solve(third.stiffness_matrix(), third.damping_matrix(), third.mass_diagonal(), 3.9,
+                         source.dofs, source.values);
+      ASSERT_TRUE(sol.ok()) << sol.message;
+      EXPECT_GT(solver.num_factorisations(), factorisations);
+      HelmholtzSolver fresh_third(choice);
+      const HelmholtzSolution reference_third = fresh_third.solve(
+          third.stiffness_matrix(), third.damping_matrix(), third.mass_diagonal(), 3.9, source.dofs, source.values);
+      EXPECT_LT((sol.q - reference_third.q).norm(), 1e-7 * reference_third.q.norm());
+    }
+  }
+}
