@@ -118,8 +118,11 @@ FrequencyHistogram kpm_frequency_histogram(const DynamicalMatrix &dynamical, int
     const Eigen::VectorXd gmu = kernel.cwiseProduct(mu.col(r));
     double below = 0.0;
     for (int b = 0; b <= nbins; ++b) {
+      // a range starting at f = 0 starts at the lower end of the mapped spectrum: the kernel
+      // spreads the peak of the zero modes to both sides of lambda = 0
       const double omega = 2.0 * pi * (fmin + b * hist.bin_width);
-      const double cumulative = cumulative_fraction(gmu, (omega * omega - centre) / half_width);
+      const double x = (b == 0 && fmin == 0.0) ? -1.0 : (omega * omega - centre) / half_width;
+      const double cumulative = cumulative_fraction(gmu, x);
       if (b > 0) fractions(b - 1, r) = cumulative - below;
       below = cumulative;
     }

@@ -11,6 +11,9 @@
    fraction of eigenvalues in each frequency bin [f_a, f_b] is the exact
    integral of the KPM density over lambda in [(2 pi f_a)^2, (2 pi f_b)^2]:
      N(x) = g_0 mu_0 (1 - t/pi) - (2/pi) sum_{m>=1} g_m mu_m sin(m t)/m,  t = acos x.
+   A range starting at fmin = 0 integrates from the lower end of the mapped
+   spectrum instead of lambda = 0, so that the zero modes (which the kernel
+   spreads to both sides of 0) are counted in full in the first bin.
    The histogram is normalised over the bins as in frequency_histogram();
    density_error is the standard error of the mean over the R vectors.
    The energy resolution is about pi B / moments in lambda; use bins wider

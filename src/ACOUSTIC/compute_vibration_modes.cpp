@@ -1,0 +1,418 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing authors: the ACOUSTIC package developers.
+
+   Vibration modes K v = omega^2 M v of the contact network of pair
+   granular/acoustic (the network fix acoustic/mindlin drives), with the
+   atoms of a fixed group clamped: the network is gathered to rank 0 by
+   VibrationNetwork, solved there by the ACOUSTIC numerics (dense, Lanczos
+   or KPM), and the results are broadcast or scattered back.
+------------------------------------------------------------------------- */
+
+#include "compute_vibration_modes.h"
+
+#include "acoustic_contact_network.h"
+#include "acoustic_dynamical_matrix.h"
+#include "acoustic_frequency_histogram.h"
+#include "acoustic_solver_error.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+#include "memory.h"
+#include "update.h"
+
+#include <cmath>
+#include <new>
+
+using namespace LAMMPS_NS;
+
+static const char CMD[] = "compute vibration/modes";
+static constexpr int HISTOGRAM_COLUMNS = 3;    // bin centre, density, error of the density
+static constexpr int MODE_COLUMNS = 3;         // mode index, frequency, participation ratio
+
+/* ---------------------------------------------------------------------- */
+
+ComputeVibrationModes::ComputeVibrationModes(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), method(Acoustic::ModeMethod::Dense), fixed_groupbit(0), nmodes(10),
+    nbins(0), fmin(0.0), fmax(0.0), selected_mode(0), ndof(0), solved_step(-1),
+    solved_with_shapes(false), nzero(0.0), histogram(nullptr), mode_rows(nullptr),
+    nmode_rows_max(0), shape_values(nullptr), shape_atom(nullptr), nmax(0)
+{
+  bool nmodes_set = false, kpm_set = false;
+  int iarg = 3;
+  while (iarg < narg) {
+    const int used = settings.parse(iarg, narg, arg, CMD, lmp, false);
+    if (used > 0) {
+      iarg += used;
+      continue;
+    }
+    const std::string key = arg[iarg];
+    auto need = [&](int n) {
+      if (iarg + n >= narg)
+        error->all(FLERR, "Illegal {} command: keyword {} needs {} value(s)", CMD, key, n);
+    };
+    if (key == "fixed") {
+      need(1);
+      fixed_group = arg[iarg + 1];
+      if (group->find(fixed_group) < 0)
+        error->all(FLERR, "Illegal {} command: fixed group {} does not exist; define it with the "
+                          "group command first", CMD, fixed_group);
+      iarg += 2;
+    } else if (key == "method") {
+      need(1);
+      try {
+        method = Acoustic::mode_method_from_name(arg[iarg + 1]);
+      } catch (Acoustic::SolverError &e) {
+        error->all(FLERR, "Illegal {} command: {}", CMD, e.what());
+      }
+      iarg += 2;
+    } else if (key == "nmodes") {
+      need(1);
+      nmodes = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (nmodes <= 0)
+        error->all(FLERR, "Illegal {} command: nmodes must be > 0, got {}", CMD, nmodes);
+      nmodes_set = true;
+      iarg += 2;
+    } else if (key == "bins") {
+      need(3);
+      nbins = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      fmin = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      fmax = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+      try {
+        Acoustic::check_histogram_range(nbins, fmin, fmax);
+      } catch (Acoustic::SolverError &e) {
+        error->all(FLERR, "Illegal {} command: bins Nb fmin fmax: {}", CMD, e.what());
+      }
+      iarg += 4;
+    } else if (key == "mode") {
+      need(1);
+      selected_mode = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (selected_mode < 1)
+        error->all(FLERR, "Illegal {} command: mode must be >= 1 (modes are numbered from 1 "
+                          "upwards in frequency), got {}", CMD, selected_mode);
+      iarg += 2;
+    } else if (key == "moments") {
+      need(1);
+      kpm.moments = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (kpm.moments < 2)
+        error->all(FLERR, "Illegal {} command: moments must be >= 2, got {}", CMD, kpm.moments);
+      kpm_set = true;
+      iarg += 2;
+    } else if (key == "vectors") {
+      need(1);
+      kpm.random_vectors = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (kpm.random_vectors < 2)
+        error->all(FLERR, "Illegal {} command: vectors must be >= 2 (the error estimate needs "
+                          "two), got {}", CMD, kpm.random_vectors);
+      kpm_set = true;
+      iarg += 2;
+    } else if (key == "seed") {
+      need(1);
+      const bigint seed = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (seed <= 0) error->all(FLERR, "Illegal {} command: seed must be > 0, got {}", CMD, seed);
+      kpm.seed = static_cast<std::uint64_t>(seed);
+      kpm_set = true;
+      iarg += 2;
+    } else if (key == "damping") {
+      error->all(FLERR, "Illegal {} command: keyword damping does not apply: the modes are those "
+                        "of the undamped network (use damping with fix acoustic/mindlin)", CMD);
+    } else {
+      error->all(FLERR, "Illegal {} command: unknown keyword {}; keywords are stiffness, "
+                        "kappa_scale, ratio, model, fixed, method, nmodes, bins, mode, moments, "
+                        "vectors, seed", CMD, key);
+    }
+  }
+
+  // keywords that only one method uses
+  const bool kpm_method = (method == Acoustic::ModeMethod::Kpm);
+  if (nmodes_set && method != Acoustic::ModeMethod::Lanczos)
+    error->all(FLERR, "Illegal {} command: nmodes applies to method lanczos only (dense computes "
+                      "every mode); add method lanczos or remove nmodes", CMD);
+  if (kpm_set && !kpm_method)
+    error->all(FLERR, "Illegal {} command: moments, vectors and seed apply to method kpm only", CMD);
+  if (kpm_method && nbins == 0)
+    error->all(FLERR, "Illegal {} command: method kpm computes the density of states only; "
+                      "give its range with bins Nb fmin fmax", CMD);
+  if (kpm_method && selected_mode > 0)
+    error->all(FLERR, "Illegal {} command: method kpm computes no individual mode; use method "
+                      "dense or lanczos with keyword mode", CMD);
+  if (method == Acoustic::ModeMethod::Lanczos && selected_mode > nmodes)
+    error->all(FLERR, "Illegal {} command: mode {} is out of range: method lanczos computes "
+                      "nmodes = {} modes; raise nmodes to at least {}", CMD, selected_mode, nmodes,
+               selected_mode);
+
+  ndof = Acoustic::dofs_per_grain(domain->dimension, settings.model);
+  network.reset(new VibrationNetwork(lmp, settings, CMD));
+
+  // outputs
+  scalar_flag = 1;
+  extscalar = 0;
+  if (!kpm_method) {
+    vector_flag = 1;
+    size_vector = 0;
+    size_vector_variable = 1;
+    extvector = 0;
+    local_flag = 1;
+    size_local_rows = 0;
+    size_local_cols = MODE_COLUMNS;
+  }
+  if (nbins > 0) {
+    array_flag = 1;
+    size_array_rows = nbins;
+    size_array_cols = HISTOGRAM_COLUMNS;
+    extarray = 0;
+    memory->create(histogram, nbins, HISTOGRAM_COLUMNS, "vibration/modes:histogram");
+    for (int b = 0; b < nbins; b++)
+      for (int k = 0; k < HISTOGRAM_COLUMNS; k++) histogram[b][k] = 0.0;
+    array = histogram;
+  }
+  if (selected_mode > 0) {
+    peratom_flag = 1;
+    size_peratom_cols = (settings.model == Acoustic::ContactModel::Full) ? 6 : 3;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+ComputeVibrationModes::~ComputeVibrationModes()
+{
+  memory->destroy(histogram);
+  memory->destroy(mode_rows);
+  memory->destroy(shape_values);
+  memory->destroy(shape_atom);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeVibrationModes::init()
+{
+  network->init();
+  fixed_groupbit = 0;
+  if (!fixed_group.empty()) {
+    const int ifixed = group->find(fixed_group);
+    if (ifixed < 0) error->all(FLERR, "{}: fixed group {} no longer exists", CMD, fixed_group);
+    fixed_groupbit = group->bitmask[ifixed];
+  }
+  bigint counts_local[2] = {0, 0}, counts[2];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    counts_local[0]++;
+    if (atom->mask[i] & fixed_groupbit) counts_local[1]++;
+  }
+  MPI_Allreduce(counts_local, counts, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (counts[0] == 0)
+    error->all(FLERR, "{}: compute group {} has no atom", CMD, group->names[igroup]);
+  if (fixed_groupbit && counts[1] == 0)
+    error->all(FLERR, "{}: fixed group {} has no atom in the compute group {}; the clamped atoms "
+                      "must belong to the compute group", CMD, fixed_group, group->names[igroup]);
+  solved_step = -1;    // the packing may have changed since the last run
+}
+
+/* ----------------------------------------------------------------------
+   rank 0: the eigenproblem of the network just built; returns an error
+   message, empty on success
+------------------------------------------------------------------------- */
+
+std::string ComputeVibrationModes::solve_on_rank0(bool with_shapes)
+{
+  try {
+    const Acoustic::ContactNetwork &net = network->network();
+    std::vector<int> fixed_dofs;
+    for (int g : network->marked_grains())
+      for (int k = 0; k < ndof; k++) fixed_dofs.push_back(net.dof(g, k));
+    const Acoustic::DynamicalMatrix dynamical(net.stiffness_matrix(), net.mass_diagonal(),
+                                              fixed_dofs, ndof);
+    if (dynamical.num_free() == 0)
+      return fmt::format("every atom of the compute group {} is in the fixed group {}: no degree "
+                         "of freedom is left", group->names[igroup], fixed_group);
+
+    Acoustic::VibrationModes modes;
+    Acoustic::FrequencyHistogram hist;
+    switch (method) {
+      case Acoustic::ModeMethod::Dense:
+        modes = Acoustic::dense_vibration_modes(dynamical, with_shapes);
+        break;
+      case Acoustic::ModeMethod::Lanczos:
+        modes = Acoustic::lanczos_vibration_modes(dynamical, nmodes);
+        break;
+      case Acoustic::ModeMethod::Kpm:
+        hist = Acoustic::kpm_frequency_histogram(dynamical, nbins, fmin, fmax, kpm);
+        // KPM resolves no single eigenvalue: the zero modes it reports are the DOFs
+        // without any stiffness (rattlers), not mechanisms of the connected network
+        modes.zero_modes = static_cast<int>(dynamical.decoupled_free_dofs().size());
+        break;
+    }
+    const int nfound = static_cast<int>(modes.frequencies.size());
+    if (selected_mode > nfound)
+      return fmt::format("mode {} is out of range: method {} found {} modes of the network ({} "
+                         "free DOFs); choose mode between 1 and {}", selected_mode,
+                         Acoustic::mode_method_name(method), nfound, dynamical.num_free(), nfound);
+    if (nbins > 0 && method != Acoustic::ModeMethod::Kpm)
+      hist = Acoustic::frequency_histogram(modes.frequencies, nbins, fmin, fmax);
+
+    nzero = modes.zero_modes;
+    frequencies.assign(modes.frequencies.data(), modes.frequencies.data() + nfound);
+    participation.assign(modes.participation_ratios.data(),
+                         modes.participation_ratios.data() + modes.participation_ratios.size());
+    for (int b = 0; b < nbins; b++) {
+      histogram[b][0] = hist.bin_centres[b];
+      histogram[b][1] = hist.density[b];
+      histogram[b][2] = hist.density_error[b];
+    }
+    if (selected_mode > 0 && with_shapes) {
+      // the sign of a mode is arbitrary: make its largest component positive
+      selected_shape = modes.shapes.col(selected_mode - 1);
+      Eigen::Index largest = 0;
+      selected_shape.cwiseAbs().maxCoeff(&largest);
+      if (selected_shape[largest] < 0.0) selected_shape = -selected_shape;
+    }
+  } catch (Acoustic::SolverError &e) {
+    return e.what();
+  } catch (std::bad_alloc &) {
+    return "out of memory in the eigensolver; use method lanczos or kpm for large networks";
+  }
+  return std::string();
+}
+
+/* ----------------------------------------------------------------------
+   build the network and solve, once per timestep (twice if the shapes are
+   needed after a dense solve without them)
+------------------------------------------------------------------------- */
+
+void ComputeVibrationModes::solve(bool need_shapes)
+{
+  if (solved_step == update->ntimestep && (solved_with_shapes || !need_shapes)) return;
+  const bool with_shapes = need_shapes || selected_mode > 0;
+
+  network->build(groupbit, fixed_groupbit);
+  std::string failure;
+  if (comm->me == 0) failure = solve_on_rank0(with_shapes);
+  int length = static_cast<int>(failure.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, world);
+  if (length > 0) {
+    failure.resize(length);
+    MPI_Bcast(&failure[0], length, MPI_CHAR, 0, world);
+    error->all(FLERR, "{}: {}", CMD, failure);
+  }
+
+  int nfound = static_cast<int>(frequencies.size());
+  MPI_Bcast(&nfound, 1, MPI_INT, 0, world);
+  frequencies.resize(nfound);
+  MPI_Bcast(frequencies.data(), nfound, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&nzero, 1, MPI_DOUBLE, 0, world);
+  if (nbins > 0) MPI_Bcast(&histogram[0][0], nbins * HISTOGRAM_COLUMNS, MPI_DOUBLE, 0, world);
+
+  solved_step = update->ntimestep;
+  solved_with_shapes = with_shapes;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double ComputeVibrationModes::compute_scalar()
+{
+  invoked_scalar = update->ntimestep;
+  solve(false);
+  scalar = nzero;
+  return scalar;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeVibrationModes::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  solve(false);
+  size_vector = static_cast<int>(frequencies.size());
+  vector = frequencies.data();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeVibrationModes::compute_array()
+{
+  invoked_array = update->ntimestep;
+  solve(false);
+}
+
+/* ----------------------------------------------------------------------
+   one row per mode on rank 0: mode index, frequency, participation ratio
+------------------------------------------------------------------------- */
+
+void ComputeVibrationModes::compute_local()
+{
+  invoked_local = update->ntimestep;
+  solve(true);
+  const int nrows = (comm->me == 0) ? static_cast<int>(participation.size()) : 0;
+  if (nrows > nmode_rows_max) {
+    nmode_rows_max = nrows;
+    memory->destroy(mode_rows);
+    memory->create(mode_rows, nmode_rows_max, MODE_COLUMNS, "vibration/modes:mode_rows");
+  }
+  for (int m = 0; m < nrows; m++) {
+    mode_rows[m][0] = m + 1;
+    mode_rows[m][1] = frequencies[m];
+    mode_rows[m][2] = participation[m];
+  }
+  size_local_rows = nrows;
+  array_local = mode_rows;
+}
+
+/* ----------------------------------------------------------------------
+   shape of the selected mode: translations (x, y, z), then rotations
+   (x, y, z) with model full; zero for fixed atoms and atoms not in the group
+------------------------------------------------------------------------- */
+
+void ComputeVibrationModes::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  solve(true);
+
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(shape_values);
+    memory->destroy(shape_atom);
+    memory->create(shape_values, nmax, 2 * ndof, "vibration/modes:shape_values");
+    memory->create(shape_atom, nmax, size_peratom_cols, "vibration/modes:shape_atom");
+    array_atom = shape_atom;
+  }
+  Eigen::VectorXcd values;
+  if (comm->me == 0) values = selected_shape.cast<std::complex<double>>();
+  network->scatter(values, shape_values, groupbit);
+
+  const int dim = domain->dimension;
+  for (int i = 0; i < atom->nlocal; i++) {
+    for (int k = 0; k < size_peratom_cols; k++) shape_atom[i][k] = 0.0;
+    // DOFs of a grain: dim translations, then its rotations (1 in 2D, 3 in 3D)
+    for (int k = 0; k < dim; k++) shape_atom[i][k] = shape_values[i][2 * k];
+    if (ndof == dim) continue;
+    if (dim == 2) shape_atom[i][5] = shape_values[i][2 * dim];
+    else
+      for (int k = 0; k < 3; k++) shape_atom[i][3 + k] = shape_values[i][2 * (dim + k)];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double ComputeVibrationModes::memory_usage()
+{
+  double bytes = static_cast<double>(nmax) * (2 * ndof + size_peratom_cols) * sizeof(double);
+  bytes += static_cast<double>(frequencies.size() + participation.size()) * sizeof(double);
+  bytes += static_cast<double>(nmode_rows_max) * MODE_COLUMNS * sizeof(double);
+  bytes += static_cast<double>(selected_shape.size()) * sizeof(double);
+  return bytes;
+}
