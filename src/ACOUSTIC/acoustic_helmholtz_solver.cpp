@@ -58,6 +58,21 @@ class SparsityPattern {
     return std::equal(outer_.begin(), outer_.end(), a.outerIndexPtr()) &&
         std::equal(inner_.begin(), inner_.end(), a.innerIndexPtr());
   }
+  // number of columns of a whose row indices differ from the stored pattern
+  // (all of them if the sizes differ): how many DOFs gained or lost a contact
+  template <typename Scalar> Eigen::Index changed_columns(const Eigen::SparseMatrix<Scalar> &a) const
+  {
+    if (!valid_ || a.rows() != rows_) return a.cols();
+    Eigen::Index changed = 0;
+    for (Eigen::Index col = 0; col < a.outerSize(); ++col) {
+      const auto *begin = a.innerIndexPtr() + a.outerIndexPtr()[col];
+      const auto *end = a.innerIndexPtr() + a.outerIndexPtr()[col + 1];
+      const auto old_begin = inner_.begin() + outer_[col];
+      const auto old_end = inner_.begin() + outer_[col + 1];
+      if ((end - begin) != (old_end - old_begin) || !std::equal(begin, end, old_begin)) ++changed;
+    }
+    return changed;
+  }
   template <typename Scalar> void store(const Eigen::SparseMatrix<Scalar> &a)
   {
     rows_ = a.rows();
@@ -390,8 +405,13 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
   Attempt attempt;
   bool rhs_zero = false;
   Factorisations &f = *factors_;
-  // an earlier factorisation can precondition this solve if the free DOFs are the same
-  const bool can_reuse = reuse_ && f.last != Factorisations::NONE && f.last_free_dofs == part.free_dofs;
+  // an earlier factorisation can precondition this solve if the free DOFs are the
+  // same and few of them changed contacts: BiCGSTAB then needs about as many
+  // iterations as there are changed columns
+  bool can_reuse = reuse_ && f.last != Factorisations::NONE && f.last_free_dofs == part.free_dofs;
+  auto few_changes = [&](Eigen::Index changed) {
+    return changed <= std::max<Eigen::Index>(4, static_cast<Eigen::Index>(reuse_fraction_ * nfree));
+  };
   const double reuse_tolerance = 1e-2 * residual_tolerance_;
   Factorisations::Kind used = Factorisations::NONE;
   bool iterated = false;
@@ -401,7 +421,8 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     timings_.solve += seconds_since(start);
     rhs_zero = rhs.squaredNorm() == 0.0;
     if (nfree > 0 && !rhs_zero) {
-      if (can_reuse && f.last == Factorisations::LU_COMPLEX) {
+      if (can_reuse && f.last == Factorisations::LU_COMPLEX &&
+          few_changes(f.lu_complex_pattern.changed_columns(a))) {
         attempt = iterate_with_earlier_factors(f.lu_complex, a, rhs, f.last_x, reuse_iterations_,
                                                reuse_tolerance, timings_);
         if (attempt.factorised && attempt.residual <= residual_tolerance_) used = f.last;
@@ -422,7 +443,11 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     timings_.solve += seconds_since(start);
     rhs_zero = rhs.squaredNorm() == 0.0;
     if (nfree > 0 && !rhs_zero) {
-      if (can_reuse && (f.last == Factorisations::LDLT || f.last == Factorisations::LU_REAL)) {
+      const Eigen::Index changed = !can_reuse ? nfree
+          : (f.last == Factorisations::LDLT) ? f.ldlt_pattern.changed_columns(a)
+                                             : f.lu_real_pattern.changed_columns(a);
+      if (can_reuse && (f.last == Factorisations::LDLT || f.last == Factorisations::LU_REAL) &&
+          few_changes(changed)) {
         if (f.last == Factorisations::LDLT)
           attempt = iterate_with_earlier_factors(f.ldlt, a, rhs, f.last_x, reuse_iterations_,
                                                  reuse_tolerance, timings_);

@@ -89,13 +89,15 @@ class HelmholtzSolver {
                           const Eigen::VectorXcd &prescribed_values);
 
   // Reuse of earlier factors: when the free DOFs are those of the last successful
-  // solve (the contact network changed, the grains did not), first try BiCGSTAB
-  // preconditioned with that solve's factorisation, starting from its solution;
-  // factorise only if it does not converge within max_iterations.  Off by default.
-  void set_reuse_factorisation(bool reuse, int max_iterations = 30)
+  // solve and at most changed_fraction of their columns changed pattern (few
+  // contacts opened or closed), first try BiCGSTAB preconditioned with that
+  // solve's factorisation, starting from its solution; factorise only if it does
+  // not converge within max_iterations.  Off by default.
+  void set_reuse_factorisation(bool reuse, int max_iterations = 30, double changed_fraction = 0.01)
   {
     reuse_ = reuse;
     reuse_iterations_ = max_iterations;
+    reuse_fraction_ = changed_fraction;
   }
   bool reuse_factorisation() const { return reuse_; }
   // solves answered by BiCGSTAB with earlier factors, since construction
@@ -118,6 +120,7 @@ class HelmholtzSolver {
   long num_reuses_ = 0;
   bool reuse_ = false;
   int reuse_iterations_ = 30;
+  double reuse_fraction_ = 0.01;
   SolverTimings timings_;
   std::unique_ptr<Factorisations> factors_;
 };
