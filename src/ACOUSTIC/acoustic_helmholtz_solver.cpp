@@ -31,6 +31,8 @@ double seconds_since(Clock::time_point start)
 // UMFPACK LU that also reports whether the matrix was found singular.
 template <typename Matrix> class UmfpackLU : public Eigen::UmfPackLU<Matrix> {
  public:
+  // no iterative refinement in UMFPACK's solve: the caller measures the residual
+  UmfpackLU() { this->umfpackControl()(UMFPACK_IRSTEP) = 0; }
   bool singular() const { return this->m_fact_errorCode == UMFPACK_WARNING_singular_matrix; }
 };
 
@@ -460,13 +462,11 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
       if (iterated) {
         ++num_reuses_;
       } else {
-        if (choice_ != LinearSolverChoice::Lu) {
+        if (choice_ == LinearSolverChoice::Ldlt) {
           used = Factorisations::LDLT;
           attempt = factorise_and_solve(f.ldlt, f.ldlt_pattern, a, rhs, num_analyses_, num_factorisations_,
                                         timings_);
-        }
-        const bool ldlt_good = attempt.factorised && attempt.residual <= residual_tolerance_;
-        if (choice_ == LinearSolverChoice::Lu || (choice_ == LinearSolverChoice::Auto && !ldlt_good)) {
+        } else {
           used = Factorisations::LU_REAL;
           f.lu_real_matrix = a;
           attempt = factorise_and_solve(f.lu_real, f.lu_real_pattern, f.lu_real_matrix, rhs,

@@ -7,12 +7,12 @@
      (K_FF + i omega C_FF - omega^2 M_FF) q_F = -(K_FP + i omega C_FP) q_P.
 
    Factorisations ("solver" keyword of fix acoustic/mindlin):
-     ldlt  sparse LDL^T of the real symmetric, possibly indefinite matrix
-           (CHOLMOD simplicial, no pivoting); undamped problems only.
-     lu    sparse LU with pivoting (UMFPACK), real or complex.
-     auto  ldlt for undamped problems, falling back to lu when LDL^T meets
-           a zero pivot or its residual is above the tolerance; lu when
-           damped.
+     lu    sparse LU with partial pivoting (UMFPACK, multifrontal on BLAS),
+           real or complex: robust for the indefinite matrices above the
+           lowest eigenfrequency, and the fastest here with an optimised BLAS.
+     ldlt  sparse LDL^T of the real symmetric matrix (CHOLMOD simplicial, no
+           pivoting, half the memory of LU); undamped problems only.
+     auto  lu.
    The solver object keeps the symbolic analysis (fill-reducing ordering) of
    each factorisation and only refactorises numerically while the sparsity
    pattern of the free-free matrix stays the same; a new pattern is analysed
