@@ -18,7 +18,7 @@ run_case() {    # name deck vars...
   mpirun -np 2 --oversubscribe "$lmp" -in "$here/$deck" -var model "$model" "$@" \
     -log "$work/log.$name" -screen none -nocite
   awk -v name="$name" '
-    /^ *Step Atoms/ {inthermo=1; next}
+    /^ *Step Atoms/ {inthermo=1; last=""; next}
     inthermo && /^ *[0-9]/ {last=$0; next}
     /^Loop time of/ {loop=$4; inthermo=0}
     END {
@@ -31,6 +31,6 @@ run_case() {    # name deck vars...
 run_case 2d_2000 in.layer2d -var nx 100 -var rows 20
 run_case 2d_8000 in.layer2d -var nx 200 -var rows 40
 run_case 2d_32000 in.layer2d -var nx 400 -var rows 80
-run_case 3d_32000 in.layer3d -var nx 20 -var nz 20
+[ "${ACOUSTIC_BENCH_3D:-1}" = 1 ] && run_case 3d_32000 in.layer3d -var nx 20 -var nz 20
 echo "times in seconds: the split is that of the last update; fact/all = factorisations / solves"
 echo "(the others reuse the last factors as BiCGSTAB preconditioner); fix_s = all updates; loop_s = loop time"

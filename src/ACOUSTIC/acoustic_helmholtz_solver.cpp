@@ -411,12 +411,18 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
   // same and few of them changed contacts: BiCGSTAB then needs about as many
   // iterations as there are changed columns
   bool can_reuse = reuse_ && f.last != Factorisations::NONE && f.last_free_dofs == part.free_dofs;
+  // after an attempt that did not converge, factorise directly for a few solves
+  if (reuse_backoff_ > 0) {
+    --reuse_backoff_;
+    can_reuse = false;
+  }
   auto few_changes = [&](Eigen::Index changed) {
-    return changed <= std::max<Eigen::Index>(4, static_cast<Eigen::Index>(reuse_fraction_ * nfree));
+    const Eigen::Index limit = std::min<Eigen::Index>(100, static_cast<Eigen::Index>(reuse_fraction_ * nfree));
+    return changed <= std::max<Eigen::Index>(4, limit);
   };
   const double reuse_tolerance = 1e-2 * residual_tolerance_;
   Factorisations::Kind used = Factorisations::NONE;
-  bool iterated = false;
+  bool iterated = false, tried_reuse = false;
   if (damped) {
     Eigen::SparseMatrix<Complex> a;
     assemble_free_system<Complex>(stiffness, &damping, Complex(0.0, omega), mass, omega, part, prescribed_values, a, rhs);
@@ -425,6 +431,7 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     if (nfree > 0 && !rhs_zero) {
       if (can_reuse && f.last == Factorisations::LU_COMPLEX &&
           few_changes(f.lu_complex_pattern.changed_columns(a))) {
+        tried_reuse = true;
         attempt = iterate_with_earlier_factors(f.lu_complex, a, rhs, f.last_x, reuse_iterations_,
                                                reuse_tolerance, timings_);
         if (attempt.factorised && attempt.residual <= residual_tolerance_) used = f.last;
@@ -450,6 +457,7 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
                                              : f.lu_real_pattern.changed_columns(a);
       if (can_reuse && (f.last == Factorisations::LDLT || f.last == Factorisations::LU_REAL) &&
           few_changes(changed)) {
+        tried_reuse = true;
         if (f.last == Factorisations::LDLT)
           attempt = iterate_with_earlier_factors(f.ldlt, a, rhs, f.last_x, reuse_iterations_,
                                                  reuse_tolerance, timings_);
@@ -488,6 +496,7 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
       break;
   }
   if (iterated) result.factorisation += " (earlier factors, BiCGSTAB)";
+  if (tried_reuse && !iterated) reuse_backoff_ = 4;
   // remember a good factorisation and its solution for the next solve
   if (attempt.factorised && attempt.x.allFinite() && attempt.residual <= residual_tolerance_) {
     f.last = used;

@@ -89,11 +89,12 @@ class HelmholtzSolver {
                           const Eigen::VectorXcd &prescribed_values);
 
   // Reuse of earlier factors: when the free DOFs are those of the last successful
-  // solve and at most changed_fraction of their columns changed pattern (few
-  // contacts opened or closed), first try BiCGSTAB preconditioned with that
+  // solve and at most changed_fraction of their columns (and no more than 100)
+  // changed pattern (few contacts opened or closed), first try BiCGSTAB preconditioned with that
   // solve's factorisation, starting from its solution; factorise only if it does
-  // not converge within max_iterations.  Off by default.
-  void set_reuse_factorisation(bool reuse, int max_iterations = 30, double changed_fraction = 0.01)
+  // not converge within max_iterations (and then factorise directly for the next
+  // 4 solves: the network is changing too fast for the earlier factors).  Off by default.
+  void set_reuse_factorisation(bool reuse, int max_iterations = 10, double changed_fraction = 0.01)
   {
     reuse_ = reuse;
     reuse_iterations_ = max_iterations;
@@ -119,8 +120,9 @@ class HelmholtzSolver {
   long num_factorisations_ = 0;
   long num_reuses_ = 0;
   bool reuse_ = false;
-  int reuse_iterations_ = 30;
+  int reuse_iterations_ = 10;
   double reuse_fraction_ = 0.01;
+  int reuse_backoff_ = 0;
   SolverTimings timings_;
   std::unique_ptr<Factorisations> factors_;
 };
