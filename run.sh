@@ -123,7 +123,7 @@ case "$cmd" in
     ctest --test-dir "$build" --output-on-failure ;;
   demo)
     configure_and_build
-    exec "$top/examples/incline/run.sh" "$build" ;;
+    exec "$top/examples/avalanche/run.sh" "$build" ;;
   *)
     sed -n '2,15p' "$0"; exit 2 ;;
 esac

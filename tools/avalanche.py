@@ -1,0 +1,343 @@
+#!/usr/bin/python3
+"""Analysis of inclined-plane avalanche runs (paper 000, examples/avalanche).
+
+Reads LAMMPS dump files (dump custom of the grains, dump local of the contacts
+written by fix acoustic/mindlin) and the per-millisecond series file written by
+examples/avalanche/in.avalanche, and computes
+
+  sigma_l     Eq. 3.1 of paper 000: normalised standard deviation of the
+              downslope velocity in the top (l = 1) and bottom (l = 2) halves of
+              the layer, split at the centre of mass of the observed grains;
+  E_k/E_t     kinetic over total energy, E_t = E_k + sum m g (y - y_b);
+  stability   the 0.1 s window test E_k/E_t < eps_E and the arrest test;
+  t_con       the delay from the tilt to a uniform flow (sigma_1 < 0.3 and
+              sigma_2 < 0.9 held for a while);
+  theta_m     the first angle of a tilt ramp with a uniform flow;
+  spectrum    eigenfrequencies of the normal-spring network (paper 000 Eq. 2.9,
+              the model of fix acoustic/mindlin "model normal") from a dump
+              local with k_n and a dump of the positions and masses.
+
+Units are those of the run (SI for examples/avalanche).  Command line:
+
+    python3 tools/avalanche.py sigma   run.dump [--g 9.81]     sigma_1, sigma_2, E_k/E_t per frame
+    python3 tools/avalanche.py ramp    run.series              state of each angle, theta_m, t_con
+    python3 tools/avalanche.py spectrum run.dump run.contacts  frequency quantiles of the network
+"""
+import argparse
+import sys
+from dataclasses import dataclass, field
+
+import numpy as np
+
+EPS_E = 3e-8      # paper 000: E_k/E_t threshold of a stable state
+EPS_SIGMA1 = 0.3  # paper 000: sigma_1 (top half) of a uniform flow
+EPS_SIGMA2 = 0.9  # paper 000: sigma_2 (bottom half) of a uniform flow
+
+
+# ---------------------------------------------------------------- reading
+
+@dataclass
+class Frame:
+    """One snapshot of a LAMMPS dump: timestep, box and named columns."""
+    timestep: int
+    box: np.ndarray                       # (3, 2) lo/hi per axis
+    columns: dict = field(default_factory=dict)
+
+    def __getitem__(self, name):
+        try:
+            return self.columns[name]
+        except KeyError:
+            raise KeyError(f"no column '{name}' in the dump; columns are "
+                           f"{list(self.columns)}") from None
+
+    def __contains__(self, name):
+        return name in self.columns
+
+    def __len__(self):
+        return len(next(iter(self.columns.values()))) if self.columns else 0
+
+
+def read_dump(path):
+    """All frames of a text dump custom (ITEM: ATOMS) or dump local (ITEM: ENTRIES)."""
+    frames = []
+    with open(path) as f:
+        lines = f.read().splitlines()
+    k = 0
+    while k < len(lines):
+        if not lines[k].startswith("ITEM: TIMESTEP"):
+            k += 1
+            continue
+        step = int(lines[k + 1].split()[0])
+        k += 2
+        assert lines[k].startswith("ITEM: NUMBER OF"), f"{path}: bad dump header at line {k + 1}"
+        n = int(lines[k + 1])
+        k += 2
+        box = np.zeros((3, 2))
+        if lines[k].startswith("ITEM: BOX BOUNDS"):
+            for a in range(3):
+                box[a] = [float(v) for v in lines[k + 1 + a].split()[:2]]
+            k += 4
+        header = lines[k].split()
+        assert header[1] in ("ATOMS", "ENTRIES"), f"{path}: unexpected '{lines[k]}'"
+        names = header[2:]
+        data = np.loadtxt(lines[k + 1:k + 1 + n], ndmin=2) if n > 0 else np.zeros((0, len(names)))
+        k += 1 + n
+        frames.append(Frame(step, box, {name: data[:, c] for c, name in enumerate(names)}))
+    return frames
+
+
+CONTACT_COLUMNS = ["i", "j", "fn", "kn", "Ut", "mu_ratio"]
+
+
+def contact_columns(frame):
+    """Name the six columns of fix acoustic/mindlin's local array (dump local f_ID[1..6])."""
+    names = list(frame.columns)
+    if all(c in frame.columns for c in CONTACT_COLUMNS):
+        return frame
+    if len(names) != 6:
+        raise ValueError(f"expected the 6 columns of fix acoustic/mindlin, got {names}")
+    return Frame(frame.timestep, frame.box,
+                 {new: frame.columns[old] for new, old in zip(CONTACT_COLUMNS, names)})
+
+
+SERIES_COLUMNS = ["time", "theta", "ratio", "sigma1", "sigma2", "vx1", "vx2", "mobile",
+                  "mu_mean", "frac_weak"]
+
+
+def read_series(path):
+    """The per-millisecond series of in.avalanche (fix print): a dict of arrays."""
+    data = np.loadtxt(path, comments="#", ndmin=2)
+    return {name: data[:, c] for c, name in enumerate(SERIES_COLUMNS[:data.shape[1]])}
+
+
+# ---------------------------------------------------------------- per frame
+
+def layer_masks(y, split=None):
+    """Top and bottom halves of a layer, split at `split` (default: mean height)."""
+    y = np.asarray(y, float)
+    if split is None:
+        split = y.mean()
+    return y > split, y <= split
+
+
+def sigma_l(vx):
+    """Eq. 3.1: std(vx) / |mean(vx)| of one layer (inf when the mean is zero)."""
+    vx = np.asarray(vx, float)
+    if vx.size == 0:
+        return np.inf
+    mean = vx.mean()
+    std = np.sqrt(max(np.mean(vx * vx) - mean * mean, 0.0))
+    return std / abs(mean) if mean != 0 else np.inf
+
+
+def sigma_layers(y, vx, split=None):
+    """(sigma_1, sigma_2) of the top and bottom halves of the observed grains."""
+    top, bottom = layer_masks(y, split)
+    vx = np.asarray(vx, float)
+    return sigma_l(vx[top]), sigma_l(vx[bottom])
+
+
+def energy_ratio(mass, y, vx, vy, g, yb, radius=None, omega=None):
+    """E_k / E_t with E_t = E_k + sum m g (y - yb); rotations counted when given."""
+    mass = np.asarray(mass, float)
+    ek = 0.5 * np.sum(mass * (np.asarray(vx) ** 2 + np.asarray(vy) ** 2))
+    if radius is not None and omega is not None:
+        ek += 0.5 * np.sum(0.4 * mass * np.asarray(radius) ** 2 * np.asarray(omega) ** 2)
+    ep = np.sum(mass * g * (np.asarray(y, float) - yb))
+    return ek / (ek + ep)
+
+
+def frame_observables(frame, g=9.81, grain_type=1, base_type=2, obs=(0.0, 1.0)):
+    """sigma_1, sigma_2, E_k/E_t and the angle column (if any) of one dump frame."""
+    t = frame["type"]
+    grains = t == grain_type
+    yb = frame["y"][t == base_type].max() if np.any(t == base_type) else frame["y"].min()
+    lo, hi = frame.box[0]
+    x = frame["x"]
+    inobs = grains & (x >= lo + obs[0] * (hi - lo)) & (x < lo + obs[1] * (hi - lo))
+    s1, s2 = sigma_layers(frame["y"][inobs], frame["vx"][inobs])
+    omega = frame.columns.get("omegaz")
+    radius = frame.columns.get("radius")
+    ratio = energy_ratio(frame["mass"][grains], frame["y"][grains], frame["vx"][grains],
+                         frame["vy"][grains], g, yb,
+                         None if radius is None else radius[grains],
+                         None if omega is None else omega[grains])
+    theta = frame["v_th"][0] if "v_th" in frame and len(frame) else np.nan
+    return {"timestep": frame.timestep, "theta": theta, "sigma1": s1, "sigma2": s2, "ratio": ratio}
+
+
+# ---------------------------------------------------------------- protocol
+
+def runs_of(flags):
+    """Length of the run of True ending at each sample."""
+    out = np.zeros(len(flags), int)
+    n = 0
+    for k, f in enumerate(flags):
+        n = n + 1 if f else 0
+        out[k] = n
+    return out
+
+
+@dataclass
+class AngleResult:
+    theta: float
+    state: str            # stable | stopped | local | partial | uniform
+    duration: float       # time spent at this angle
+    t_con: float          # delay to a uniform flow (nan unless uniform)
+    max_ratio: float      # max E_k/E_t after the first nhold samples
+
+
+def classify_angle(time, ratio, sigma1, sigma2, mobile, dt=1e-3, twin=0.1, thold=0.01,
+                   eps_e=EPS_E, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, fspread=0.5, theta=np.nan):
+    """Paper 000's test at one angle, on samples taken every dt after the tilt.
+
+    Same rules as in.avalanche: uniform as soon as sigma_1 < eps1, sigma_2 < eps2
+    and more than fspread of the grains mobile hold for thold (t_con = time of the
+    first of those samples, measured from the tilt); static (stable, or stopped
+    if E_k/E_t exceeded eps_E after the first thold) once the window twin is over
+    and E_k/E_t < eps_E held for thold; local if still moving at the end of the
+    window with at most fspread of the grains mobile; partial otherwise.
+    `time` is the sample time measured from the tilt (first sample at dt).
+    """
+    time, ratio = np.asarray(time, float), np.asarray(ratio, float)
+    sigma1, sigma2, mobile = (np.asarray(a, float) for a in (sigma1, sigma2, mobile))
+    nhold = int(round(thold / dt))
+    nwin = int(round(twin / dt))
+    quiet = runs_of(ratio < eps_e)
+    uniform = runs_of((sigma1 < eps1) & (sigma2 < eps2) & (mobile > fspread))
+    rmax = 0.0
+    for k in range(len(time)):
+        ic = k + 1
+        if ic > nhold:
+            rmax = max(rmax, ratio[k])
+        if uniform[k] >= nhold:
+            first = k - nhold + 1
+            return AngleResult(theta, "uniform", time[k], time[first] - dt, rmax)
+        if ic >= nwin and quiet[k] >= nhold:
+            return AngleResult(theta, "stable" if rmax < eps_e else "stopped", time[k], np.nan, rmax)
+        if ic == nwin and mobile[k] < fspread:
+            return AngleResult(theta, "local", time[k], np.nan, rmax)
+    return AngleResult(theta, "partial", time[-1] if len(time) else 0.0, np.nan, rmax)
+
+
+def split_by_angle(series):
+    """Consecutive samples of a series at the same angle: list of (theta, index array)."""
+    theta = np.asarray(series["theta"])
+    if theta.size == 0:
+        return []
+    edges = np.flatnonzero(np.diff(theta) != 0) + 1
+    return [(theta[idx[0]], idx) for idx in np.split(np.arange(theta.size), edges)]
+
+
+def ramp_results(series, dt=1e-3, first_theta=None, **kw):
+    """classify_angle() for each angle of a tilt-ramp series (pre-ramp angles skipped)."""
+    results = []
+    for theta, idx in split_by_angle(series):
+        if first_theta is not None and theta < first_theta - 1e-9:
+            continue
+        # the tilt happened at the last sample of the previous angle; a sample
+        # printed at that same time (fix print at the set-up of a run) is dropped
+        t0 = series["time"][idx[0] - 1] if idx[0] > 0 else series["time"][idx[0]] - dt
+        idx = idx[series["time"][idx] > t0 + 1e-9 * dt]
+        results.append(classify_angle(series["time"][idx] - t0, series["ratio"][idx],
+                                      series["sigma1"][idx], series["sigma2"][idx],
+                                      series["mobile"][idx], dt=dt, theta=theta, **kw))
+    return results
+
+
+def theta_m(results):
+    """(theta_m, t_con) of the first uniform angle of a ramp, (nan, nan) if none."""
+    for r in results:
+        if r.state == "uniform":
+            return r.theta, r.t_con
+    return np.nan, np.nan
+
+
+def t_con(time, sigma1, sigma2, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, hold=1):
+    """First time from which sigma_1 < eps1 and sigma_2 < eps2 hold for `hold` samples."""
+    n = runs_of((np.asarray(sigma1) < eps1) & (np.asarray(sigma2) < eps2))
+    k = np.flatnonzero(n >= hold)
+    return float(np.asarray(time)[k[0] - hold + 1]) if k.size else np.nan
+
+
+# ---------------------------------------------------------------- vibration network
+
+def network_spectrum(atoms, contacts, fixed_types=(2,), dim=2):
+    """Eigenfrequencies (Hz if SI) of the normal-spring network of paper 000.
+
+    K = sum_c k_n (e_i - e_j)(e_i - e_j)^T (x) n n^T over the contacts of the dump
+    local (tags i, j and k_n of fix acoustic/mindlin), M = diag(m); atoms of
+    `fixed_types` are clamped (the frozen base).  Periodic images along x are
+    resolved with the box of the atom frame.  Returns sorted frequencies of the
+    free degrees of freedom (zero modes included).
+    """
+    contacts = contact_columns(contacts)
+    ids = atoms["id"].astype(int)
+    index = {t: k for k, t in enumerate(ids)}
+    free = ~np.isin(atoms["type"].astype(int), fixed_types)
+    dof = -np.ones(len(ids), int)
+    dof[free] = np.arange(free.sum())
+    nfree = free.sum() * dim
+    K = np.zeros((nfree, nfree))
+    pos = np.column_stack([atoms["x"], atoms["y"]])[:, :dim]
+    lx = atoms.box[0, 1] - atoms.box[0, 0]
+    for i, j, kn in zip(contacts["i"].astype(int), contacts["j"].astype(int), contacts["kn"]):
+        a, b = index[i], index[j]
+        r = pos[a] - pos[b]
+        r[0] -= lx * np.round(r[0] / lx)
+        n = r / np.linalg.norm(r)
+        block = kn * np.outer(n, n)
+        for p, q, sign in ((a, a, 1), (b, b, 1), (a, b, -1), (b, a, -1)):
+            if dof[p] >= 0 and dof[q] >= 0:
+                K[dof[p] * dim:dof[p] * dim + dim, dof[q] * dim:dof[q] * dim + dim] += sign * block
+    m = np.repeat(atoms["mass"][free], dim)
+    D = K / np.sqrt(np.outer(m, m))
+    w2 = np.linalg.eigvalsh(D)
+    return np.sqrt(np.clip(w2, 0.0, None)) / (2.0 * np.pi)
+
+
+# ---------------------------------------------------------------- command line
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = p.add_subparsers(dest="cmd", required=True)
+    s = sub.add_parser("sigma", help="sigma_1, sigma_2, E_k/E_t of each dump frame")
+    s.add_argument("dump")
+    s.add_argument("--g", type=float, default=9.81)
+    s.add_argument("--obs", type=float, nargs=2, default=(0.0, 1.0), help="observed x range (fractions of the box)")
+    r = sub.add_parser("ramp", help="angle-by-angle states, theta_m and t_con from a series file")
+    r.add_argument("series")
+    r.add_argument("--theta0", type=float, default=None, help="first tested angle (skips the pre-ramp)")
+    r.add_argument("--epsE", type=float, default=EPS_E)
+    sp = sub.add_parser("spectrum", help="eigenfrequencies of the contact network")
+    sp.add_argument("dump")
+    sp.add_argument("contacts")
+    sp.add_argument("--frame", type=int, default=-1)
+    a = p.parse_args(argv)
+    if a.cmd == "sigma":
+        print("# step theta sigma1 sigma2 Ek/Et")
+        for fr in read_dump(a.dump):
+            o = frame_observables(fr, g=a.g, obs=a.obs)
+            print(f"{o['timestep']} {o['theta']:g} {o['sigma1']:.4g} {o['sigma2']:.4g} {o['ratio']:.4g}")
+    elif a.cmd == "ramp":
+        res = ramp_results(read_series(a.series), first_theta=a.theta0, eps_e=a.epsE)
+        for x in res:
+            print(f"theta {x.theta:5.2f}  {x.state:8s} after {x.duration:.3f} s  max Ek/Et {x.max_ratio:.2e}"
+                  + (f"  t_con {x.t_con:.3f} s" if x.state == "uniform" else ""))
+        tm, tc = theta_m(res)
+        print(f"theta_m = {tm:g} deg  t_con = {tc:.3f} s")
+    elif a.cmd == "spectrum":
+        atoms = read_dump(a.dump)[a.frame]
+        cont = [c for c in read_dump(a.contacts) if c.timestep == atoms.timestep]
+        if not cont:
+            sys.exit(f"no contact frame at timestep {atoms.timestep}")
+        f = network_spectrum(atoms, cont[0])
+        nz = f[f > 1e-6 * f.max()]
+        q = np.percentile(nz, [1, 10, 50, 90, 99, 100])
+        print(f"{len(f)} modes, {len(f) - len(nz)} zero; frequency percentiles 1/10/50/90/99/100: "
+              + " ".join(f"{v:.4g}" for v in q))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

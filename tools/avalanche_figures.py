@@ -1,0 +1,212 @@
+#!/usr/bin/python3
+"""PNG figures of paper 000 from avalanche runs (examples/avalanche), matplotlib only.
+
+    avalanche_figures.py modes  [RUN.dump RUN.contacts] [--hist modes.hist] [--frame K] [--f0 70e3] -o fig3.png
+        Fig. 3: density of states of the contact network, from compute vibration/modes
+        (--hist, the file of in.modes) and/or rebuilt from a dump and its contacts dump
+    avalanche_figures.py sigma  RUN.series --theta 19.5 [RUN2.series --theta 15 ...] -o fig6.png
+        Figs. 6 / 9: sigma_1, sigma_2 against the time since the tilt to theta
+    avalanche_figures.py thetam TABLE -o fig7.png
+        Fig. 7: theta_m against H/d; TABLE lines "H/d theta_m(0 kHz) theta_m(70 kHz)"
+        (optional 4th and 5th columns: paper 000's values, nan if unknown)
+    avalanche_figures.py tcon   TABLE -o fig8.png
+        Fig. 8: t_con against theta; TABLE lines "label theta t_con"
+    avalanche_figures.py chains RUN.dump RUN.contacts [--frame K] -o fig10.png
+        Fig. 10: force chains, width proportional to f_n, colour 1 - mu*/mu
+"""
+import argparse
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.collections import LineCollection  # noqa: E402
+
+import avalanche as av  # noqa: E402
+
+
+def _frames(dump, contacts, frame):
+    atoms = av.read_dump(dump)[frame]
+    match = [c for c in av.read_dump(contacts) if c.timestep == atoms.timestep]
+    if not match:
+        sys.exit(f"no contact frame at timestep {atoms.timestep} in {contacts}")
+    return atoms, av.contact_columns(match[0])
+
+
+def read_ave_time_vector(path):
+    """Last block of a fix ave/time ... mode vector file: array of rows (index, c1, c2, ...)."""
+    blocks, rows, left = [], [], 0
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        w = line.split()
+        if left == 0:
+            if rows:
+                blocks.append(np.array(rows))
+            rows, left = [], int(w[1])
+            continue
+        rows.append([float(v) for v in w])
+        left -= 1
+    if rows:
+        blocks.append(np.array(rows))
+    return blocks[-1]
+
+
+def fig_modes(a):
+    """Density of states: compute vibration/modes histogram (--hist) and/or the
+    spectrum of the network rebuilt from a dump and its contacts dump."""
+    fig, ax = plt.subplots(figsize=(5, 3.2))
+    title = []
+    if a.hist:
+        h = read_ave_time_vector(a.hist)
+        centre, dens = h[:, 1] / 1e3, h[:, 2] * 1e3          # per kHz
+        width = centre[1] - centre[0]
+        ax.bar(centre, dens, width=width, color="tab:blue", alpha=0.7, label="compute vibration/modes")
+        title.append(f"{os.path.basename(a.hist)}")
+    if a.dump and a.contacts:
+        atoms, contacts = _frames(a.dump, a.contacts, a.frame)
+        f = av.network_spectrum(atoms, contacts) / 1e3
+        nz = f[f > 1e-6 * f.max()]
+        bins = np.linspace(0, max(nz.max(), a.f0 / 1e3) * 1.05, a.bins + 1)
+        cnt, edges = np.histogram(nz, bins=bins)
+        dens = cnt / (len(nz) * np.diff(edges))
+        ax.step(edges[:-1], dens, where="post", color="k", lw=1, label="tools/avalanche.py")
+        title.append(f"{len(f)} modes ({len(f) - len(nz)} zero), {100 * np.mean(nz > a.f0 / 1e3):.1f} % "
+                     f"above {a.f0 / 1e3:g} kHz, highest {nz.max():.1f} kHz")
+    if not title:
+        sys.exit("modes: give --hist FILE and/or DUMP CONTACTS")
+    ax.axvline(a.f0 / 1e3, color="tab:orange", lw=2, label=f"drive {a.f0 / 1e3:g} kHz")
+    ax.set_xlabel("eigenfrequency (kHz)")
+    ax.set_ylabel("density of states (1/kHz)")
+    ax.set_title("\n".join(title), fontsize=8)
+    ax.legend(fontsize=7)
+    return fig
+
+
+def fig_sigma(a):
+    if len(a.theta) != len(a.series):
+        sys.exit("give one --theta per series file")
+    fig, axes = plt.subplots(1, len(a.series), figsize=(4.2 * len(a.series), 3.2), squeeze=False)
+    for ax, path, theta in zip(axes[0], a.series, a.theta):
+        s = av.read_series(path)
+        parts = [idx for th, idx in av.split_by_angle(s) if abs(th - theta) < 1e-6]
+        if not parts:
+            sys.exit(f"{path}: no samples at theta = {theta}")
+        idx = parts[-1]
+        t = s["time"][idx] - s["time"][idx[0]] + (s["time"][1] - s["time"][0])
+        ax.semilogy(t, s["sigma1"][idx], color="tab:blue", label=r"$\sigma_1$ (top)")
+        ax.semilogy(t, s["sigma2"][idx], color="tab:red", label=r"$\sigma_2$ (bottom)")
+        ax.axhline(av.EPS_SIGMA1, color="tab:blue", ls="--", lw=1)
+        ax.axhline(av.EPS_SIGMA2, color="tab:red", ls="-", lw=1)
+        ax.set_ylim(0.05, 100)
+        ax.set_xlabel("time since the tilt (s)")
+        ax.set_ylabel(r"$\sigma_l$")
+        ax.set_title(f"{path.split('/')[-1]}: $\\theta$ = {theta:g}°", fontsize=9)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
+def fig_thetam(a):
+    t = np.atleast_2d(np.loadtxt(a.table))
+    fig, ax = plt.subplots(figsize=(4.5, 3.4))
+    ax.plot(t[:, 1], t[:, 0], "o-", color="tab:blue", label="0 kHz (this code)")
+    ax.plot(t[:, 2], t[:, 0], "o-", color="tab:orange", label="70 kHz (this code)")
+    if t.shape[1] >= 5:
+        for col, c in ((3, "tab:blue"), (4, "tab:orange")):
+            ok = np.isfinite(t[:, col])
+            ax.plot(t[ok, col], t[ok, 0], "s", mfc="none", color=c, label=f"paper 000, {'0' if col == 3 else '70'} kHz")
+    ax.set_xlabel(r"avalanche angle $\theta_m$ (°)")
+    ax.set_ylabel("H/d")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
+def fig_tcon(a):
+    rows = [line.split() for line in open(a.table) if line.strip() and not line.startswith("#")]
+    fig, ax = plt.subplots(figsize=(4.5, 3.4))
+    for label in dict.fromkeys(r[0] for r in rows):
+        pts = np.array([[float(r[1]), float(r[2])] for r in rows if r[0] == label])
+        pts = pts[np.argsort(pts[:, 0])]
+        ax.plot(pts[:, 0], pts[:, 1], "o-", label=label)
+    ax.set_xlabel(r"$\theta$ (°)")
+    ax.set_ylabel(r"$t_{con}$ (s)")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
+def fig_chains(a):
+    atoms, c = _frames(a.dump, a.contacts, a.frame)
+    index = {int(t): k for k, t in enumerate(atoms["id"])}
+    x, y = atoms["x"], atoms["y"]
+    lx = atoms.box[0, 1] - atoms.box[0, 0]
+    segs, width, colour = [], [], []
+    fmax = c["fn"].max() if len(c) else 1.0
+    for i, j, fn, s in zip(c["i"].astype(int), c["j"].astype(int), c["fn"], c["mu_ratio"]):
+        p, q = index[i], index[j]
+        dx = x[q] - x[p]
+        dx -= lx * np.round(dx / lx)            # nearest periodic image
+        segs.append([(x[p], y[p]), (x[p] + dx, y[q])])
+        width.append(0.3 + 3.0 * fn / fmax)
+        colour.append(1.0 - s)
+    d = 2 * np.mean(atoms["radius"])
+    fig, ax = plt.subplots(figsize=(10, 10 * (np.ptp(y) + 2 * d) / (lx + 2 * d) + 1.2))
+    from matplotlib.patches import Circle
+    from matplotlib.collections import PatchCollection
+    disks = PatchCollection([Circle((xx, yy), r) for xx, yy, r in zip(x, y, atoms["radius"])],
+                            facecolor="0.92", edgecolor="0.75", linewidth=0.3)
+    ax.add_collection(disks)
+    lc = LineCollection(segs, linewidths=width, cmap="viridis", array=np.array(colour))
+    lc.set_clim(0, 1)
+    ax.add_collection(lc)
+    ax.set_xlim(atoms.box[0, 0], atoms.box[0, 1])
+    ax.set_ylim(y.min() - d, y.max() + d)
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    cb = fig.colorbar(lc, ax=ax, orientation="horizontal", fraction=0.08, pad=0.02)
+    cb.set_label(r"$1 - \mu^*/\mu$ (line width $\propto f_n$)")
+    ax.set_title(f"timestep {atoms.timestep}: {len(c)} contacts, mean $\\mu^*/\\mu$ = "
+                 f"{np.mean(c['mu_ratio']):.3f}", fontsize=9)
+    return fig
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = p.add_subparsers(dest="cmd", required=True)
+    m = sub.add_parser("modes")
+    m.add_argument("dump", nargs="?")
+    m.add_argument("contacts", nargs="?")
+    m.add_argument("--hist", help="histogram file of compute vibration/modes (fix ave/time mode vector)")
+    m.add_argument("--frame", type=int, default=0)
+    m.add_argument("--f0", type=float, default=70e3)
+    m.add_argument("--bins", type=int, default=60)
+    s = sub.add_parser("sigma")
+    s.add_argument("series", nargs="+")
+    s.add_argument("--theta", type=float, action="append", required=True)
+    t = sub.add_parser("thetam")
+    t.add_argument("table")
+    c = sub.add_parser("tcon")
+    c.add_argument("table")
+    ch = sub.add_parser("chains")
+    ch.add_argument("dump")
+    ch.add_argument("contacts")
+    ch.add_argument("--frame", type=int, default=-1)
+    for q in (m, s, t, c, ch):
+        q.add_argument("-o", "--output", required=True)
+        q.add_argument("--dpi", type=int, default=110)
+    a = p.parse_args(argv)
+    fig = {"modes": fig_modes, "sigma": fig_sigma, "thetam": fig_thetam, "tcon": fig_tcon,
+           "chains": fig_chains}[a.cmd](a)
+    fig.savefig(a.output, dpi=a.dpi, bbox_inches="tight")
+    print(f"wrote {a.output}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,220 @@
+"""tools/avalanche.py on small synthetic dumps and series with known answers."""
+import math
+
+import numpy as np
+import pytest
+
+import avalanche as av
+
+DT = 1e-3
+
+
+def dump_text(frames):
+    """A LAMMPS dump custom with columns id type radius mass x y vx vy omegaz v_th."""
+    out = []
+    for step, rows in frames:
+        out += ["ITEM: TIMESTEP", str(step), "ITEM: NUMBER OF ATOMS", str(len(rows)),
+                "ITEM: BOX BOUNDS pp fm pp", "0 10", "-1 10", "-0.5 0.5",
+                "ITEM: ATOMS id type radius mass x y vx vy omegaz v_th"]
+        out += [" ".join(f"{v:g}" for v in r) for r in rows]
+    return "\n".join(out) + "\n"
+
+
+def layer_rows(theta, vtop, vbottom):
+    """Two base grains (type 2, y = 0) and four grains: two low (y = 1), two high (y = 3)."""
+    rows = [[1, 2, 0.5, 1, 1, 0, 0, 0, 0, theta], [2, 2, 0.5, 1, 3, 0, 0, 0, 0, theta]]
+    for k, (y, v) in enumerate([(1, vbottom[0]), (1, vbottom[1]), (3, vtop[0]), (3, vtop[1])]):
+        rows.append([3 + k, 1, 0.5, 2.0, 1 + 2 * k, y, v, 0, 0, theta])
+    return rows
+
+
+def test_sigma_l_known_values():
+    assert av.sigma_l([2, 2, 2]) == 0.0
+    assert av.sigma_l([1, 3]) == pytest.approx(0.5)            # std 1, mean 2
+    assert av.sigma_l([-1, -3]) == pytest.approx(0.5)          # |mean| in the denominator
+    assert math.isinf(av.sigma_l([-1, 1]))                     # no mean flow
+    s1, s2 = av.sigma_layers([0, 0, 2, 2], [1, 3, 4, 4])       # split at the mean height 1
+    assert (s1, s2) == (pytest.approx(0.0), pytest.approx(0.5))
+
+
+def test_energy_ratio_known_value():
+    # E_k = 0.5*2*(3^2+4^2) = 25, E_p = 2*10*(1.5-0.5) = 20
+    assert av.energy_ratio([2.0], [1.5], [3.0], [4.0], g=10.0, yb=0.5) == pytest.approx(25 / 45)
+    # rotation: 0.5 * 0.4 m r^2 w^2 = 0.5*0.4*2*1*4 = 1.6
+    r = av.energy_ratio([2.0], [1.5], [3.0], [4.0], g=10.0, yb=0.5, radius=[1.0], omega=[2.0])
+    assert r == pytest.approx(26.6 / 46.6)
+
+
+def test_read_dump_and_frame_observables(tmp_path):
+    path = tmp_path / "run.dump"
+    path.write_text(dump_text([(100, layer_rows(12.5, (2, 2), (1, 3))),
+                               (200, layer_rows(13.0, (0, 0), (0, 0)))]))
+    frames = av.read_dump(path)
+    assert [f.timestep for f in frames] == [100, 200]
+    assert len(frames[0]) == 6
+    np.testing.assert_allclose(frames[0].box[0], [0, 10])
+    o = av.frame_observables(frames[0], g=10.0)
+    assert o["theta"] == 12.5
+    assert o["sigma1"] == pytest.approx(0.0)      # top: both at 2
+    assert o["sigma2"] == pytest.approx(0.5)      # bottom: 1 and 3
+    ek = 0.5 * 2 * (4 + 4 + 1 + 9)
+    ep = 2 * 10 * (1 + 1 + 3 + 3)
+    assert o["ratio"] == pytest.approx(ek / (ek + ep))
+    still = av.frame_observables(frames[1], g=10.0)
+    assert still["ratio"] == 0.0 and math.isinf(still["sigma1"])
+    # observation window x in [0, 6): ids 3, 4 (y = 1, v = 1, 3) and 5 (y = 3, v = 2)
+    o = av.frame_observables(frames[0], g=10.0, obs=(0.0, 0.6))
+    assert (o["sigma1"], o["sigma2"]) == (pytest.approx(0.0), pytest.approx(0.5))
+
+
+def test_read_dump_local_contacts(tmp_path):
+    path = tmp_path / "run.contacts"
+    path.write_text("ITEM: TIMESTEP\n5\nITEM: NUMBER OF ENTRIES\n2\nITEM: BOX BOUNDS pp fm pp\n"
+                    "0 1\n0 1\n0 1\nITEM: ENTRIES f_us[1] f_us[2] f_us[3] f_us[4] f_us[5] f_us[6]\n"
+                    "1 2 0.5 100 1e-9 0.25\n2 3 1.5 200 0 1\n")
+    c = av.contact_columns(av.read_dump(path)[0])
+    np.testing.assert_array_equal(c["i"], [1, 2])
+    np.testing.assert_allclose(c["mu_ratio"], [0.25, 1.0])
+
+
+def samples(n, **overrides):
+    base = dict(ratio=np.full(n, 1e-10), sigma1=np.full(n, 5.0), sigma2=np.full(n, 5.0),
+                mobile=np.zeros(n))
+    for k, v in overrides.items():
+        base[k] = v
+    time = DT * np.arange(1, n + 1)
+    return time, base
+
+
+def classify(n, **overrides):
+    time, s = samples(n, **overrides)
+    return av.classify_angle(time, s["ratio"], s["sigma1"], s["sigma2"], s["mobile"], dt=DT)
+
+
+def test_stable_despite_the_tilt_transient():
+    ratio = np.full(100, 1e-9)
+    ratio[:5] = 1e-4                      # transient of the tilt, inside the first 10 ms
+    r = classify(100, ratio=ratio)
+    assert r.state == "stable" and r.duration == pytest.approx(0.1)
+    assert r.max_ratio == pytest.approx(1e-9)
+
+
+def test_rearrangement_that_stops():
+    ratio = np.full(100, 1e-9)
+    ratio[40:60] = 1e-5
+    r = classify(100, ratio=ratio)
+    assert r.state == "stopped" and r.max_ratio == pytest.approx(1e-5)
+    # a threshold above the rearrangement makes it stable
+    time, s = samples(100, ratio=ratio)
+    assert av.classify_angle(time, s["ratio"], s["sigma1"], s["sigma2"], s["mobile"],
+                             eps_e=1e-4).state == "stable"
+
+
+def test_motion_at_the_end_of_the_window():
+    ratio = np.full(600, 1e-9)
+    ratio[95:] = 1e-5                     # still moving at 0.1 s
+    assert classify(600, ratio=ratio, mobile=np.full(600, 0.1)).state == "local"
+    # a flow that spreads but arrests at 0.3 s
+    ratio = np.full(600, 1e-3)
+    ratio[300:] = 1e-9
+    r = classify(600, ratio=ratio, mobile=np.r_[np.full(300, 0.9), np.zeros(300)])
+    assert r.state == "stopped" and r.duration == pytest.approx(0.310)
+    # a flow that spreads and never gets uniform
+    assert classify(600, ratio=np.full(600, 1e-3), mobile=np.full(600, 0.9)).state == "partial"
+
+
+def test_uniform_flow_and_t_con():
+    n = 600
+    s1 = np.full(n, 2.0)
+    s2 = np.full(n, 2.0)
+    s1[200:] = 0.2
+    s2[250:] = 0.8                        # both below from sample 250 on: t_con = 0.250 s
+    s2[255] = 0.95                        # a blip: the 10-sample hold restarts at 256
+    r = classify(n, ratio=np.full(n, 1e-3), sigma1=s1, sigma2=s2, mobile=np.full(n, 0.9))
+    assert r.state == "uniform"
+    assert r.t_con == pytest.approx(0.256)
+    assert r.duration == pytest.approx(0.266)
+    # sigma criteria met by a layer that does not move are no flow
+    r = classify(n, ratio=np.full(n, 1e-9), sigma1=s1, sigma2=s2, mobile=np.zeros(n))
+    assert r.state == "stable"
+    # criteria of paper 000: 0.3 for the top half, 0.9 for the bottom half
+    r = classify(n, ratio=np.full(n, 1e-3), sigma1=np.full(n, 0.35), sigma2=np.full(n, 0.5),
+                 mobile=np.full(n, 0.9))
+    assert r.state == "partial"
+    assert av.t_con(DT * np.arange(n), s1, s2, hold=10) == pytest.approx(0.256)
+    assert math.isnan(av.t_con([0, 1], [1, 1], [1, 1]))
+
+
+def test_ramp_and_theta_m(tmp_path):
+    rows = []
+    t = 0.0
+    for theta in (5.0, 9.5):              # pre-ramp
+        for _ in range(10):
+            t += DT
+            rows.append([t, theta, 1e-4, 3, 3, 0, 0, 0.0, 1, 0])
+    for theta, kind in ((10.0, "stable"), (10.5, "local"), (11.0, "uniform")):
+        # fix print also prints at the set-up of the first run of an angle: a sample
+        # at the time of the tilt, already with the new angle, which must be ignored
+        rows.append([t, theta, 1e-2, 0.1, 0.5, 0.1, 0.05, 0.95, 1, 0])
+        for k in range(100 if kind != "uniform" else 60):
+            t += DT
+            if kind == "stable":
+                rows.append([t, theta, 1e-9, 3, 3, 0, 0, 0.0, 1, 0])
+            elif kind == "local":
+                rows.append([t, theta, 1e-4, 3, 3, 0, 0, 0.05, 1, 0])
+            else:
+                unif = k >= 20
+                rows.append([t, theta, 1e-2, 0.1 if unif else 3, 0.5 if unif else 3, 0.1, 0.05, 0.95, 1, 0])
+    path = tmp_path / "run.series"
+    np.savetxt(path, rows, header="time theta ...")
+    res = av.ramp_results(av.read_series(path), first_theta=10.0)
+    assert [r.state for r in res] == ["stable", "local", "uniform"]
+    tm, tc = av.theta_m(res)
+    assert tm == 11.0 and tc == pytest.approx(0.020)
+    assert math.isnan(av.theta_m(res[:2])[0])
+
+
+def test_network_spectrum_of_a_clamped_grain():
+    # grain 2 between clamped grains 1 and 3 along x, springs k: omega_x^2 = 2k/m,
+    # no stiffness along y (a zero mode); the periodic image of 3 is used (box 0..4)
+    k, m = 8.0, 2.0
+    atoms = av.Frame(0, np.array([[0.0, 4.0], [-1, 1], [-1, 1]]),
+                     {"id": np.array([1, 2, 3]), "type": np.array([2, 1, 2]),
+                      "mass": np.array([1.0, m, 1.0]), "x": np.array([0.5, 1.5, 3.9]),
+                      "y": np.zeros(3)})
+    contacts = av.Frame(0, atoms.box, {"i": np.array([1, 2]), "j": np.array([2, 3]),
+                                       "fn": np.ones(2), "kn": np.array([k, k]),
+                                       "Ut": np.zeros(2), "mu_ratio": np.ones(2)})
+    f = av.network_spectrum(atoms, contacts)
+    np.testing.assert_allclose(f, [0.0, math.sqrt(2 * k / m) / (2 * math.pi)], atol=1e-12)
+
+
+def test_figures_from_synthetic_runs(tmp_path):
+    """Each figure of avalanche_figures.py is written from small synthetic files."""
+    import avalanche_figures as figs
+    dump = tmp_path / "run.dump"
+    dump.write_text(dump_text([(100, layer_rows(11.0, (2, 2), (1, 3)))]))
+    contacts = tmp_path / "run.contacts"
+    contacts.write_text("ITEM: TIMESTEP\n100\nITEM: NUMBER OF ENTRIES\n3\nITEM: BOX BOUNDS pp fm pp\n"
+                        "0 10\n-1 10\n-0.5 0.5\nITEM: ENTRIES f_us[1] f_us[2] f_us[3] f_us[4] f_us[5] f_us[6]\n"
+                        "1 3 2.0 100 1e-9 0.25\n3 5 1.0 80 0 1\n4 6 0.5 50 0 0.5\n")
+    series = tmp_path / "run.series"
+    t = DT * np.arange(1, 41)
+    np.savetxt(series, np.column_stack([t, np.full(40, 11.0), np.full(40, 1e-3), np.linspace(2, 0.1, 40),
+                                        np.linspace(3, 0.5, 40), t, t, np.full(40, 0.9),
+                                        np.ones(40), np.zeros(40)]))
+    table7 = tmp_path / "thetam.txt"
+    table7.write_text("3 20 14.5 20 14.5\n6 19.5 15 nan nan\n")
+    table8 = tmp_path / "tcon.txt"
+    table8.write_text("0kHz 19.5 0.2\n0kHz 20.5 0.1\n70kHz 15 0.09\n")
+    hist = tmp_path / "modes.hist"
+    hist.write_text("# Time-averaged data for fix hist\n# TimeStep Number-of-rows\n"
+                    "100 3\n1 500 0.0004\n2 1500 0.0004\n3 2500 0.0002\n")
+    h = figs.read_ave_time_vector(hist)
+    np.testing.assert_allclose(h[:, 1], [500, 1500, 2500])
+    runs = [["modes", str(dump), str(contacts), "--f0", "1"], ["modes", "--hist", str(hist)], ["sigma", str(series), "--theta", "11"],
+            ["thetam", str(table7)], ["tcon", str(table8)], ["chains", str(dump), str(contacts)]]
+    for k, args in enumerate(runs):
+        out = tmp_path / f"fig{k}.png"
+        assert figs.main(args + ["-o", str(out), "--dpi", "40"]) == 0
+        assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
