@@ -53,6 +53,21 @@ long LammpsInstance::natoms() const
   return static_cast<long>(lmp->atom->natoms);
 }
 
+std::vector<double> allgather(LammpsInstance &L, const std::vector<double> &mine)
+{
+  MPI_Comm world = L.lmp->world;
+  int nprocs;
+  MPI_Comm_size(world, &nprocs);
+  int n = static_cast<int>(mine.size());
+  std::vector<int> counts(nprocs), displs(nprocs, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  std::vector<double> all(displs[nprocs - 1] + counts[nprocs - 1]);
+  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
+                 world);
+  return all;
+}
+
 std::map<ContactKey, double> friction_factors(LammpsInstance &L)
 {
   auto *pair = dynamic_cast<LAMMPS_NS::PairGranularAcoustic *>(L.lmp->force->pair);
@@ -68,16 +83,7 @@ std::map<ContactKey, double> friction_factors(LammpsInstance &L)
     mine.push_back(static_cast<double>(std::max(tag[c.i], tag[c.j])));
     mine.push_back(pair->friction_factor(c.history));
   }
-  MPI_Comm world = L.lmp->world;
-  int nprocs;
-  MPI_Comm_size(world, &nprocs);
-  int n = static_cast<int>(mine.size());
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<double> all(displs[nprocs - 1] + counts[nprocs - 1]);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
-                 world);
+  const std::vector<double> all = allgather(L, mine);
   for (std::size_t k = 0; k < all.size(); k += 3) {
     const ContactKey key(static_cast<long>(all[k]), static_cast<long>(all[k + 1]));
     auto it = result.find(key);

@@ -31,6 +31,10 @@ class LammpsInstance {
   LAMMPS_NS::LAMMPS *lmp;
 };
 
+// the concatenation, over the ranks of the instance, of each rank's values,
+// on every rank (rank order)
+std::vector<double> allgather(LammpsInstance &L, const std::vector<double> &mine);
+
 // friction factor of every contact of pair granular/acoustic in the whole
 // system, keyed by (lower atom ID, higher atom ID), on every rank of the
 // instance; with newton off the two copies of a contact must agree (checked)

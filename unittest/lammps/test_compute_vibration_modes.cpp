@@ -69,16 +69,7 @@ std::vector<std::vector<double>> per_atom(LammpsInstance &L, const std::string &
     mine.push_back(static_cast<double>(L.lmp->atom->tag[i]));
     for (int k = 0; k < ncols; k++) mine.push_back(c->array_atom[i][k]);
   }
-  MPI_Comm world = L.lmp->world;
-  int nprocs;
-  MPI_Comm_size(world, &nprocs);
-  int n = static_cast<int>(mine.size());
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<double> all(displs[nprocs - 1] + counts[nprocs - 1]);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
-                 world);
+  const std::vector<double> all = AcousticTest::allgather(L, mine);
   std::vector<std::vector<double>> rows(L.natoms());
   for (std::size_t k = 0; k < all.size(); k += ncols + 1)
     rows[static_cast<long>(all[k]) - 1].assign(all.begin() + k + 1, all.begin() + k + 1 + ncols);
