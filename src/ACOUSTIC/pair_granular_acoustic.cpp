@@ -73,7 +73,8 @@ PairGranularAcoustic::PairGranularAcoustic(LAMMPS *lmp) : Pair(lmp)
   history_size_created = 0;
   comm_forward = 1;
 
-  // placeholder for the history fix, so that it keeps its place in the fix list
+  // a dummy fix stands in for the history fix until init_style() creates it,
+  // so that the history fix keeps this place in the fix list (as pair granular)
   fix_history = nullptr;
   fix_dummy = (FixDummy *) modify->add_fix(std::string(HISTORY_DUMMY_ID) + " all DUMMY");
 }
