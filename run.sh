@@ -22,7 +22,7 @@ jobs=${ACOUSTIC_JOBS:-$(nproc)}
 debian_packages=(
   build-essential cmake dpkg-dev
   openmpi-bin libopenmpi-dev
-  libeigen3-dev libsuitesparse-dev libspectra-dev liblapack-dev libblas-dev libopenblas0-serial
+  libeigen3-dev libsuitesparse-dev libmumps-dev libspectra-dev liblapack-dev libblas-dev libopenblas0-serial
   libgtest-dev
   python3-lammps python3-numpy python3-matplotlib python3-pytest
 )

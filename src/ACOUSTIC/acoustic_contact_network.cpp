@@ -90,12 +90,12 @@ int ContactNetwork::dofs_per_grain() const
   return Acoustic::dofs_per_grain(dimension_, model_);
 }
 
-Eigen::MatrixXd contact_jacobian(int dimension, ContactModel model, const Eigen::Vector3d &normal,
+ContactJacobian contact_jacobian(int dimension, ContactModel model, const Eigen::Vector3d &normal,
                                  double radius_i, double radius_j)
 {
   // Delta = (u_i - u_j) + n x (r_i theta_i + r_j theta_j)
   const int ndof = dofs_per_grain(dimension, model);
-  Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(3, 2 * ndof);
+  ContactJacobian jac = ContactJacobian::Zero(3, 2 * ndof);
   for (int d = 0; d < dimension; ++d) {
     jac(d, d) = 1.0;
     jac(d, ndof + d) = -1.0;
@@ -139,7 +139,7 @@ Eigen::Vector3cd contact_point_displacement(int dimension, ContactModel model,
   return delta;
 }
 
-Eigen::MatrixXd ContactNetwork::contact_jacobian(const Contact &c) const
+ContactJacobian ContactNetwork::contact_jacobian(const Contact &c) const
 {
   return Acoustic::contact_jacobian(dimension_, model_, c.normal, grains_[c.i].radius,
                                     grains_[c.j].radius);
@@ -156,8 +156,8 @@ Eigen::SparseMatrix<double> ContactNetwork::assemble(bool dashpots) const
     if (dashpots && normal_coeff == 0.0 && tangential_coeff == 0.0) continue;
     const Eigen::Matrix3d nn = c.normal * c.normal.transpose();
     const Eigen::Matrix3d spring = normal_coeff * nn + tangential_coeff * (Eigen::Matrix3d::Identity() - nn);
-    const Eigen::MatrixXd jac = contact_jacobian(c);
-    const Eigen::MatrixXd local = jac.transpose() * spring * jac;
+    const ContactJacobian jac = contact_jacobian(c);
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12> local = jac.transpose() * spring * jac;
     const int base[2] = {c.i * ndof, c.j * ndof};
     for (int a = 0; a < 2 * ndof; ++a)
       for (int b = 0; b < 2 * ndof; ++b)

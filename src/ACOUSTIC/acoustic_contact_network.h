@@ -44,7 +44,9 @@ int dofs_per_grain(int dimension, ContactModel model);
 
 // 3 x (2 dofs_per_grain) map from the DOFs (q_i, q_j) of a contact's two grains
 // to the relative displacement Delta of its contact point (see above).
-Eigen::MatrixXd contact_jacobian(int dimension, ContactModel model, const Eigen::Vector3d &normal,
+// (at most 3 x 12: fixed storage, no allocation per contact)
+typedef Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 12> ContactJacobian;
+ContactJacobian contact_jacobian(int dimension, ContactModel model, const Eigen::Vector3d &normal,
                                  double radius_i, double radius_j);
 
 // Delta of one contact from the complex DOF values of its two grains
@@ -103,7 +105,7 @@ class ContactNetwork {
 
  private:
   // 3 x (2 dofs_per_grain) map from (q_i, q_j) to Delta for contact c.
-  Eigen::MatrixXd contact_jacobian(const Contact &c) const;
+  ContactJacobian contact_jacobian(const Contact &c) const;
   Eigen::SparseMatrix<double> assemble(bool dashpots) const;
 
   int dimension_;

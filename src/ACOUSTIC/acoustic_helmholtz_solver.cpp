@@ -4,6 +4,7 @@
 
 #include "acoustic_helmholtz_solver.h"
 
+#include "acoustic_mumps_ldlt.h"
 #include "acoustic_solver_error.h"
 
 #include <Eigen/CholmodSupport>
@@ -120,41 +121,79 @@ DofPartition partition_dofs(int num_dofs, const std::vector<int> &prescribed_dof
   return part;
 }
 
-// Adds coeff * S to the free-free triplets and moves the free-prescribed part to the right-hand side.
+// Moves the free-prescribed part of column col of coeff * S to the right-hand side.
 template <typename Scalar>
-void add_block(const Eigen::SparseMatrix<double> &s, Scalar coeff, const DofPartition &part,
-               const Eigen::VectorXcd &values, std::vector<Eigen::Triplet<Scalar>> &triplets, Eigen::VectorXcd &rhs)
+void move_to_rhs(const Eigen::SparseMatrix<double> &s, int col, Scalar coeff, const DofPartition &part,
+                 const Complex &value, Eigen::VectorXcd &rhs)
 {
-  for (int col = 0; col < s.outerSize(); ++col) {
-    const int free_col = part.free_index[col];
-    for (Eigen::SparseMatrix<double>::InnerIterator it(s, col); it; ++it) {
-      const int free_row = part.free_index[it.row()];
-      if (free_row < 0) continue;
-      if (free_col >= 0)
-        triplets.emplace_back(free_row, free_col, coeff * it.value());
-      else
-        rhs[free_row] -= Complex(coeff * it.value()) * values[part.prescribed_index[col]];
-    }
+  for (Eigen::SparseMatrix<double>::InnerIterator it(s, col); it; ++it) {
+    const int free_row = part.free_index[it.row()];
+    if (free_row >= 0) rhs[free_row] -= Complex(coeff * it.value()) * value;
   }
 }
 
-// A_FF (pattern independent of omega and of the values) and b of the Helmholtz problem;
-// damping_coeff = i omega when damping is given.
+// A_FF = K_FF + damping_coeff C_FF - omega^2 M_FF (pattern independent of omega and of
+// the values) and b of the Helmholtz problem; damping_coeff = i omega when damping is
+// given.  Built column by column in compressed storage: the free DOFs keep their
+// order, so column j of A_FF merges the free rows of the columns of K and C (sorted)
+// with the diagonal mass term, in one pass over K and C.
 template <typename Scalar>
 void assemble_free_system(const Eigen::SparseMatrix<double> &stiffness, const Eigen::SparseMatrix<double> *damping,
                           Scalar damping_coeff, const Eigen::VectorXd &mass, double omega, const DofPartition &part,
                           const Eigen::VectorXcd &values, Eigen::SparseMatrix<Scalar> &a, Eigen::VectorXcd &rhs)
 {
+  typedef Eigen::SparseMatrix<double>::InnerIterator Iterator;
   const int nfree = static_cast<int>(part.free_dofs.size());
-  std::vector<Eigen::Triplet<Scalar>> triplets;
-  triplets.reserve(stiffness.nonZeros() + (damping ? damping->nonZeros() : 0) + nfree);
+  const int n = static_cast<int>(stiffness.cols());
   rhs.setZero(nfree);
-  add_block<Scalar>(stiffness, Scalar(1.0), part, values, triplets, rhs);
-  if (damping) add_block<Scalar>(*damping, damping_coeff, part, values, triplets, rhs);
-  for (int k = 0; k < nfree; ++k) triplets.emplace_back(k, k, Scalar(-omega * omega * mass[part.free_dofs[k]]));
-  a.resize(nfree, nfree);
-  a.setFromTriplets(triplets.begin(), triplets.end());
-  a.makeCompressed();
+  std::vector<int> outer(nfree + 1, 0), inner;
+  std::vector<Scalar> entries;
+  const std::size_t capacity = stiffness.nonZeros() + (damping ? damping->nonZeros() : 0) + nfree;
+  inner.reserve(capacity);
+  entries.reserve(capacity);
+  const int end = std::numeric_limits<int>::max();
+  for (int col = 0; col < n; ++col) {
+    const int free_col = part.free_index[col];
+    if (free_col < 0) {
+      const Complex value = values[part.prescribed_index[col]];
+      move_to_rhs<Scalar>(stiffness, col, Scalar(1.0), part, value, rhs);
+      if (damping) move_to_rhs<Scalar>(*damping, col, damping_coeff, part, value, rhs);
+      continue;
+    }
+    outer[free_col] = static_cast<int>(inner.size());
+    Iterator k(stiffness, col);
+    Iterator c = damping ? Iterator(*damping, col) : Iterator(stiffness, col);
+    bool c_valid = damping != nullptr && static_cast<bool>(c);
+    bool diagonal_pending = true;
+    for (;;) {
+      const int row_k = k ? static_cast<int>(k.row()) : end;
+      const int row_c = c_valid ? static_cast<int>(c.row()) : end;
+      const int row_d = diagonal_pending ? col : end;
+      const int row = std::min(row_k, std::min(row_c, row_d));
+      if (row == end) break;
+      Scalar sum(0.0);
+      if (row_k == row) {
+        sum += Scalar(k.value());
+        ++k;
+      }
+      if (row_c == row) {
+        sum += damping_coeff * c.value();
+        ++c;
+        c_valid = static_cast<bool>(c);
+      }
+      if (row_d == row) {
+        sum += Scalar(-omega * omega * mass[col]);
+        diagonal_pending = false;
+      }
+      const int free_row = part.free_index[row];
+      if (free_row < 0) continue;
+      inner.push_back(free_row);
+      entries.push_back(sum);
+    }
+  }
+  outer[nfree] = static_cast<int>(inner.size());
+  a = Eigen::Map<const Eigen::SparseMatrix<Scalar>>(nfree, nfree, static_cast<Eigen::Index>(inner.size()),
+                                                    outer.data(), inner.data(), entries.data());
 }
 
 // Right-hand side in the scalar type of the factorisation: [Re b, Im b] for real matrices.
@@ -198,6 +237,15 @@ template <typename Matrix> bool numerically_singular(const UmfpackLU<Matrix> &so
   return solver.info() != Eigen::Success || solver.singular();
 }
 
+// same size, pattern and values (compressed matrices)
+template <typename Scalar> bool identical(const Eigen::SparseMatrix<Scalar> &x, const Eigen::SparseMatrix<Scalar> &y)
+{
+  return x.rows() == y.rows() && x.cols() == y.cols() && x.nonZeros() == y.nonZeros() && x.isCompressed() &&
+      y.isCompressed() && std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.outerSize() + 1, y.outerIndexPtr()) &&
+      std::equal(x.innerIndexPtr(), x.innerIndexPtr() + x.nonZeros(), y.innerIndexPtr()) &&
+      std::equal(x.valuePtr(), x.valuePtr() + x.nonZeros(), y.valuePtr());
+}
+
 struct Attempt {
   bool factorised = false;
   Eigen::VectorXcd x;
@@ -207,6 +255,12 @@ struct Attempt {
 }    // namespace
 
 struct HelmholtzSolver::Factorisations {
+  explicit Factorisations(MPI_Comm comm) : team(comm), mumps_real(team), mumps_complex(team) {}
+  MumpsTeam team;
+  MumpsLdlt<double> mumps_real;
+  SparsityPattern mumps_real_pattern;
+  MumpsLdlt<Complex> mumps_complex;
+  SparsityPattern mumps_complex_pattern;
   CholmodLDLT ldlt;
   SparsityPattern ldlt_pattern;
   UmfpackLU<Eigen::SparseMatrix<double>> lu_real;
@@ -219,10 +273,16 @@ struct HelmholtzSolver::Factorisations {
   Eigen::SparseMatrix<Complex> lu_complex_matrix;
 
   // the factorisation of the last successful solve, its free DOFs and solution
-  enum Kind { NONE, LDLT, LU_REAL, LU_COMPLEX };
+  enum Kind { NONE, LDLT, LU_REAL, LU_COMPLEX, MUMPS_REAL, MUMPS_COMPLEX };
   Kind last = NONE;
   std::vector<int> last_free_dofs;
   Eigen::VectorXcd last_x;
+  // that solve's system (A_FF, b), to answer an identical one at once (e.g. the
+  // setup of a run that follows an update at the same step)
+  Eigen::SparseMatrix<double> last_real_system;
+  Eigen::SparseMatrix<Complex> last_complex_system;
+  Eigen::VectorXcd last_rhs;
+  double last_residual = 0.0;
 };
 
 namespace {
@@ -237,6 +297,11 @@ Attempt factorise_and_solve(Solver &solver, SparsityPattern &pattern, const Eige
   Clock::time_point start = Clock::now();
   if (!pattern.matches(a)) {
     solver.analyzePattern(a);
+    if (solver.info() != Eigen::Success) {
+      pattern = SparsityPattern();    // analyse again next time
+      timings.analysis += seconds_since(start);
+      return attempt;
+    }
     pattern.store(a);
     ++num_analyses;
     timings.analysis += seconds_since(start);
@@ -292,7 +357,6 @@ Attempt iterate_with_earlier_factors(const Factor &factor, const Eigen::SparseMa
   typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Dense;
   Eigen::BiCGSTAB<Eigen::SparseMatrix<Scalar>, EarlierFactorisation<Scalar, Factor>> bicgstab;
   bicgstab.preconditioner().factor = &factor;
-  bicgstab.setMaxIterations(max_iterations);
   bicgstab.setTolerance(tolerance);
   bicgstab.compute(a);
   const Dense b = as_columns(rhs, Scalar());
@@ -304,8 +368,18 @@ Attempt iterate_with_earlier_factors(const Factor &factor, const Eigen::SparseMa
       x.col(col).setZero();
       continue;
     }
+    // two iterations first: a network that changed too much for the earlier
+    // factors shows it at once, and is better factorised than iterated on
+    const int first = std::min(2, max_iterations);
+    bicgstab.setMaxIterations(first);
     x.col(col) = bicgstab.solveWithGuess(b.col(col), x0.col(col));
+    if (bicgstab.info() != Eigen::Success && max_iterations > first && bicgstab.error() <= 1e-4) {
+      bicgstab.setMaxIterations(max_iterations - first);
+      const Dense guess = x.col(col);
+      x.col(col) = bicgstab.solveWithGuess(b.col(col), guess);
+    }
     converged = converged && bicgstab.info() == Eigen::Success;
+    if (!converged) break;
   }
   if (converged) {
     attempt.factorised = true;
@@ -324,6 +398,7 @@ LinearSolverChoice linear_solver_from_name(const std::string &name)
   if (name == "auto") return LinearSolverChoice::Auto;
   if (name == "ldlt") return LinearSolverChoice::Ldlt;
   if (name == "lu") return LinearSolverChoice::Lu;
+  if (name == "mumps") return LinearSolverChoice::Mumps;
   throw SolverError("unknown linear solver '" + name + "': allowed solvers are " + linear_solver_names());
 }
 
@@ -334,6 +409,8 @@ std::string linear_solver_name(LinearSolverChoice choice)
       return "ldlt";
     case LinearSolverChoice::Lu:
       return "lu";
+    case LinearSolverChoice::Mumps:
+      return "mumps";
     default:
       return "auto";
   }
@@ -341,7 +418,7 @@ std::string linear_solver_name(LinearSolverChoice choice)
 
 std::string linear_solver_names()
 {
-  return "auto, ldlt, lu";
+  return "auto, ldlt, lu, mumps";
 }
 
 std::string solve_status_name(SolveStatus status)
@@ -356,8 +433,8 @@ std::string solve_status_name(SolveStatus status)
   }
 }
 
-HelmholtzSolver::HelmholtzSolver(LinearSolverChoice choice, double residual_tolerance) :
-    choice_(choice), residual_tolerance_(residual_tolerance), factors_(new Factorisations)
+HelmholtzSolver::HelmholtzSolver(LinearSolverChoice choice, double residual_tolerance, MPI_Comm comm) :
+    choice_(choice), residual_tolerance_(residual_tolerance), factors_(new Factorisations(comm))
 {
   if (!(residual_tolerance > 0.0) || !std::isfinite(residual_tolerance))
     throw SolverError("Helmholtz solver: the residual tolerance must be positive, got " +
@@ -366,6 +443,21 @@ HelmholtzSolver::HelmholtzSolver(LinearSolverChoice choice, double residual_tole
 
 HelmholtzSolver::~HelmholtzSolver() = default;
 
+void HelmholtzSolver::serve()
+{
+  factors_->team.serve();
+}
+
+void HelmholtzSolver::release_workers()
+{
+  factors_->team.release();
+}
+
+bool HelmholtzSolver::host() const
+{
+  return factors_->team.host();
+}
+
 HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stiffness,
                                          const Eigen::SparseMatrix<double> &damping, const Eigen::VectorXd &mass,
                                          double omega, const std::vector<int> &prescribed_dofs,
@@ -373,6 +465,7 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
 {
   timings_ = SolverTimings();
   const Clock::time_point start = Clock::now();
+  if (!host()) throw SolverError("Helmholtz solve: called on a rank other than the host; call serve() there");
 
   const Eigen::Index n = stiffness.rows();
   if (stiffness.cols() != n) throw SolverError("Helmholtz solve: the stiffness matrix is not square");
@@ -422,28 +515,58 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
   };
   const double reuse_tolerance = 1e-2 * residual_tolerance_;
   Factorisations::Kind used = Factorisations::NONE;
-  bool iterated = false, tried_reuse = false;
+  bool iterated = false, tried_reuse = false, unchanged = false;
+  auto succeeded = [&](const Attempt &t) {
+    return t.factorised && t.x.allFinite() && t.residual <= residual_tolerance_;
+  };
+  // the system of the last successful solve again: its solution, without factorising
+  auto same_as_last = [&](const Eigen::VectorXcd &b) {
+    return f.last != Factorisations::NONE && f.last_free_dofs == part.free_dofs && b == f.last_rhs;
+  };
+  auto take_last = [&]() {
+    unchanged = true;
+    used = f.last;
+    attempt.factorised = true;
+    attempt.x = f.last_x;
+    attempt.residual = f.last_residual;
+  };
   if (damped) {
     Eigen::SparseMatrix<Complex> a;
     assemble_free_system<Complex>(stiffness, &damping, Complex(0.0, omega), mass, omega, part, prescribed_values, a, rhs);
     timings_.solve += seconds_since(start);
     rhs_zero = rhs.squaredNorm() == 0.0;
     if (nfree > 0 && !rhs_zero) {
-      if (can_reuse && f.last == Factorisations::LU_COMPLEX &&
+      if (same_as_last(rhs) && identical(f.last_complex_system, a)) {
+        take_last();
+      } else if (can_reuse && f.last == Factorisations::LU_COMPLEX &&
           few_changes(f.lu_complex_pattern.changed_columns(a))) {
         tried_reuse = true;
         attempt = iterate_with_earlier_factors(f.lu_complex, a, rhs, f.last_x, reuse_iterations_,
                                                reuse_tolerance, timings_);
         if (attempt.factorised && attempt.residual <= residual_tolerance_) used = f.last;
+      } else if (can_reuse && f.last == Factorisations::MUMPS_COMPLEX &&
+                 few_changes(f.mumps_complex_pattern.changed_columns(a))) {
+        tried_reuse = true;
+        attempt = iterate_with_earlier_factors(f.mumps_complex, a, rhs, f.last_x, reuse_iterations_,
+                                               reuse_tolerance, timings_);
+        if (attempt.factorised && attempt.residual <= residual_tolerance_) used = f.last;
       }
       iterated = (used != Factorisations::NONE);
-      if (!iterated) {
+      if (!iterated && choice_ == LinearSolverChoice::Lu) {
         used = Factorisations::LU_COMPLEX;
         f.lu_complex_matrix = a;
         attempt = factorise_and_solve(f.lu_complex, f.lu_complex_pattern, f.lu_complex_matrix, rhs,
                                       num_analyses_, num_factorisations_, timings_);
+      } else if (!iterated) {
+        used = Factorisations::MUMPS_COMPLEX;
+        attempt = factorise_and_solve(f.mumps_complex, f.mumps_complex_pattern, a, rhs, num_analyses_,
+                                      num_factorisations_, timings_);
       } else {
         ++num_reuses_;
+      }
+      if (succeeded(attempt)) {
+        f.last_complex_system = a;
+        f.last_real_system = Eigen::SparseMatrix<double>();
       }
     }
   } else {
@@ -452,14 +575,22 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     timings_.solve += seconds_since(start);
     rhs_zero = rhs.squaredNorm() == 0.0;
     if (nfree > 0 && !rhs_zero) {
-      const Eigen::Index changed = !can_reuse ? nfree
-          : (f.last == Factorisations::LDLT) ? f.ldlt_pattern.changed_columns(a)
-                                             : f.lu_real_pattern.changed_columns(a);
-      if (can_reuse && (f.last == Factorisations::LDLT || f.last == Factorisations::LU_REAL) &&
-          few_changes(changed)) {
+      const Eigen::Index changed = !can_reuse                        ? nfree
+          : (f.last == Factorisations::LDLT)      ? f.ldlt_pattern.changed_columns(a)
+          : (f.last == Factorisations::MUMPS_REAL) ? f.mumps_real_pattern.changed_columns(a)
+                                                  : f.lu_real_pattern.changed_columns(a);
+      if (same_as_last(rhs) && identical(f.last_real_system, a)) {
+        take_last();
+      } else if (can_reuse &&
+                 (f.last == Factorisations::LDLT || f.last == Factorisations::LU_REAL ||
+                  f.last == Factorisations::MUMPS_REAL) &&
+                 few_changes(changed)) {
         tried_reuse = true;
         if (f.last == Factorisations::LDLT)
           attempt = iterate_with_earlier_factors(f.ldlt, a, rhs, f.last_x, reuse_iterations_,
+                                                 reuse_tolerance, timings_);
+        else if (f.last == Factorisations::MUMPS_REAL)
+          attempt = iterate_with_earlier_factors(f.mumps_real, a, rhs, f.last_x, reuse_iterations_,
                                                  reuse_tolerance, timings_);
         else
           attempt = iterate_with_earlier_factors(f.lu_real, a, rhs, f.last_x, reuse_iterations_,
@@ -474,12 +605,20 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
           used = Factorisations::LDLT;
           attempt = factorise_and_solve(f.ldlt, f.ldlt_pattern, a, rhs, num_analyses_, num_factorisations_,
                                         timings_);
+        } else if (choice_ == LinearSolverChoice::Mumps || choice_ == LinearSolverChoice::Auto) {
+          used = Factorisations::MUMPS_REAL;
+          attempt = factorise_and_solve(f.mumps_real, f.mumps_real_pattern, a, rhs, num_analyses_,
+                                        num_factorisations_, timings_);
         } else {
           used = Factorisations::LU_REAL;
           f.lu_real_matrix = a;
           attempt = factorise_and_solve(f.lu_real, f.lu_real_pattern, f.lu_real_matrix, rhs,
                                         num_analyses_, num_factorisations_, timings_);
         }
+      }
+      if (succeeded(attempt)) {
+        f.last_real_system = a;
+        f.last_complex_system = Eigen::SparseMatrix<Complex>();
       }
     }
   }
@@ -492,18 +631,35 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     case Factorisations::LU_COMPLEX:
       result.factorisation = "lu";
       break;
+    case Factorisations::MUMPS_REAL:
+    case Factorisations::MUMPS_COMPLEX:
+      result.factorisation = "mumps";
+      break;
     default:
       break;
   }
-  if (iterated) result.factorisation += " (earlier factors, BiCGSTAB)";
-  if (tried_reuse && !iterated) reuse_backoff_ = 4;
+  if (unchanged)
+    result.factorisation += " (unchanged system, earlier solution)";
+  else if (iterated)
+    result.factorisation += " (earlier factors, BiCGSTAB)";
+  // after a failed attempt factorise directly for the next 4, 8, 16 ... 64 solves
+  if (tried_reuse && !iterated) {
+    reuse_failures_ = std::min(reuse_failures_ + 1, 5);
+    reuse_backoff_ = 2 << reuse_failures_;
+  } else if (iterated && !unchanged) {
+    reuse_failures_ = 0;
+  }
   // remember a good factorisation and its solution for the next solve
-  if (attempt.factorised && attempt.x.allFinite() && attempt.residual <= residual_tolerance_) {
+  if (succeeded(attempt)) {
     f.last = used;
     f.last_free_dofs = part.free_dofs;
     f.last_x = attempt.x;
+    f.last_rhs = rhs;
+    f.last_residual = attempt.residual;
   } else {
     f.last = Factorisations::NONE;
+    f.last_real_system = Eigen::SparseMatrix<double>();
+    f.last_complex_system = Eigen::SparseMatrix<Complex>();
   }
 
   const std::string where = " (omega = " + std::to_string(omega) + ", " + std::to_string(nfree) +
@@ -529,7 +685,7 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     result.status = SolveStatus::InaccurateSolution;
     result.message = "the relative residual " + std::to_string(attempt.residual) + " exceeds the tolerance " +
         std::to_string(residual_tolerance_) + where +
-        ": the frequency is close to an eigenfrequency of the network; try solver lu, another "
+        ": the frequency is close to an eigenfrequency of the network; try another solver, another "
         "frequency, or some damping";
   }
   return result;

@@ -7,16 +7,27 @@
      (K_FF + i omega C_FF - omega^2 M_FF) q_F = -(K_FP + i omega C_FP) q_P.
 
    Factorisations ("solver" keyword of fix acoustic/mindlin):
-     lu    sparse LU with partial pivoting (UMFPACK, multifrontal on BLAS),
-           real or complex: robust for the indefinite matrices above the
-           lowest eigenfrequency, and the fastest here with an optimised BLAS.
+     mumps sparse LDL^T with 1x1 and 2x2 pivots (MUMPS, multifrontal on
+           BLAS), real symmetric or complex symmetric: the matrices above
+           are symmetric and indefinite above the lowest eigenfrequency.
+           Runs on every rank of the solver's communicator.
+     lu    sparse LU with partial pivoting (UMFPACK), real or complex, on
+           the host rank.
      ldlt  sparse LDL^T of the real symmetric matrix (CHOLMOD simplicial, no
-           pivoting, half the memory of LU); undamped problems only.
-     auto  lu.
+           pivoting), on the host rank; undamped problems only.
+     auto  mumps.
    The solver object keeps the symbolic analysis (fill-reducing ordering) of
    each factorisation and only refactorises numerically while the sparsity
    pattern of the free-free matrix stays the same; a new pattern is analysed
-   again.  Counters and timings let the caller check this.
+   again.  A system identical to the last one solved (same A_FF and b, bit
+   for bit) gets that solution back without any factorisation.  Counters and
+   timings let the caller check this.
+
+   Several ranks: construct the solver on every rank of the communicator
+   (collective).  The host (rank 0) calls solve() with the matrices; the
+   other ranks call serve() meanwhile, which returns when the host calls
+   release_workers() after its solves.  With MPI_COMM_SELF (the default)
+   serve() and release_workers() do nothing.  MPI must be initialised.
 
    Numerical failures do not throw: the returned status says what happened,
    relative_residual = ||A q_F - b|| / ||b|| is always reported, and the
@@ -31,6 +42,8 @@
 #ifndef ACOUSTIC_HELMHOLTZ_SOLVER_H
 #define ACOUSTIC_HELMHOLTZ_SOLVER_H
 
+#include <mpi.h>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -40,12 +53,12 @@
 
 namespace Acoustic {
 
-enum class LinearSolverChoice { Auto, Ldlt, Lu };
+enum class LinearSolverChoice { Auto, Ldlt, Lu, Mumps };
 
-// "auto", "ldlt" or "lu"; throws SolverError listing the allowed names otherwise.
+// "auto", "ldlt", "lu" or "mumps"; throws SolverError listing the allowed names otherwise.
 LinearSolverChoice linear_solver_from_name(const std::string &name);
 std::string linear_solver_name(LinearSolverChoice choice);
-// "auto, ldlt, lu": for help and error messages.
+// "auto, ldlt, lu, mumps": for help and error messages.
 std::string linear_solver_names();
 
 enum class SolveStatus {
@@ -59,7 +72,7 @@ struct HelmholtzSolution {
   Eigen::VectorXcd q;                     // every DOF, prescribed ones included
   SolveStatus status = SolveStatus::Success;
   double relative_residual = 0.0;         // ||A q_F - b|| / ||b||, of the factorisation used
-  std::string factorisation;              // "ldlt", "lu" or "none" (b = 0 or no free DOF), with
+  std::string factorisation;              // "ldlt", "lu", "mumps" or "none" (b = 0 or no free DOF), with
                                           // " (earlier factors, BiCGSTAB)" when they were reused
   std::string message;                    // explanation when status != Success
   bool ok() const { return status == SolveStatus::Success; }
@@ -74,8 +87,9 @@ struct SolverTimings {
 
 class HelmholtzSolver {
  public:
+  // collective over comm
   explicit HelmholtzSolver(LinearSolverChoice choice = LinearSolverChoice::Auto,
-                           double residual_tolerance = 1e-6);
+                           double residual_tolerance = 1e-6, MPI_Comm comm = MPI_COMM_SELF);
   ~HelmholtzSolver();
   HelmholtzSolver(const HelmholtzSolver &) = delete;
   HelmholtzSolver &operator=(const HelmholtzSolver &) = delete;
@@ -88,12 +102,20 @@ class HelmholtzSolver {
                           double omega, const std::vector<int> &prescribed_dofs,
                           const Eigen::VectorXcd &prescribed_values);
 
+  // Ranks other than the host: take part in the host's factorisations and
+  // solves until it calls release_workers().
+  void serve();
+  void release_workers();
+  bool host() const;
+
   // Reuse of earlier factors: when the free DOFs are those of the last successful
   // solve and at most changed_fraction of their columns (and no more than 100)
   // changed pattern (few contacts opened or closed), first try BiCGSTAB preconditioned with that
   // solve's factorisation, starting from its solution; factorise only if it does
-  // not converge within max_iterations (and then factorise directly for the next
-  // 4 solves: the network is changing too fast for the earlier factors).  Off by default.
+  // not converge within max_iterations, or has not reduced the residual below 1e-4
+  // after 2 iterations.  After a failed attempt the next 4 solves factorise
+  // directly, after consecutive failures 8, 16, ... 64 (the network changes too
+  // fast for the earlier factors); a success resets this.  Off by default.
   void set_reuse_factorisation(bool reuse, int max_iterations = 10, double changed_fraction = 0.01)
   {
     reuse_ = reuse;
@@ -101,7 +123,8 @@ class HelmholtzSolver {
     reuse_fraction_ = changed_fraction;
   }
   bool reuse_factorisation() const { return reuse_; }
-  // solves answered by BiCGSTAB with earlier factors, since construction
+  // solves answered without a factorisation, since construction: by BiCGSTAB
+  // with earlier factors, or with the earlier solution of an identical system
   long num_reuses() const { return num_reuses_; }
 
   LinearSolverChoice choice() const { return choice_; }
@@ -123,6 +146,7 @@ class HelmholtzSolver {
   int reuse_iterations_ = 10;
   double reuse_fraction_ = 0.01;
   int reuse_backoff_ = 0;
+  int reuse_failures_ = 0;    // failed attempts since the last successful reuse
   SolverTimings timings_;
   std::unique_ptr<Factorisations> factors_;
 };

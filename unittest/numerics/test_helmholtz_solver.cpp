@@ -68,6 +68,22 @@ double chain_closed_form(int n, int n_free, double m, double k, double omega)
   return (n % 2 == 0 ? 1.0 : -1.0) * std::sinh((big_n - n) * phi) / std::sinh(big_n * phi);
 }
 
+// what HelmholtzSolution::factorisation reports for a choice (auto is MUMPS)
+std::string expected_factorisation(LinearSolverChoice choice)
+{
+  switch (choice) {
+    case LinearSolverChoice::Ldlt:
+      return "ldlt";
+    case LinearSolverChoice::Lu:
+      return "lu";
+    default:
+      return "mumps";
+  }
+}
+
+const std::vector<LinearSolverChoice> all_choices = {LinearSolverChoice::Auto, LinearSolverChoice::Ldlt,
+                                                     LinearSolverChoice::Lu, LinearSolverChoice::Mumps};
+
 class DrivenChain : public ::testing::TestWithParam<LinearSolverChoice> {};
 
 }    // namespace
@@ -86,7 +102,7 @@ TEST_P(DrivenChain, MatchesClosedFormBelowAndAboveTheBand)
     const HelmholtzSolution sol = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
                                                network.mass_diagonal(), omega, source.dofs, source.values);
     ASSERT_TRUE(sol.ok()) << sol.message;
-    EXPECT_EQ(sol.factorisation, GetParam() == LinearSolverChoice::Ldlt ? "ldlt" : "lu");
+    EXPECT_EQ(sol.factorisation, expected_factorisation(GetParam()));
     EXPECT_LT(sol.relative_residual, 1e-12);
     double scale = 0.0;
     for (int n = 0; n <= n_free; ++n) scale = std::max(scale, std::abs(chain_closed_form(n, n_free, m, k, omega)));
@@ -96,17 +112,13 @@ TEST_P(DrivenChain, MatchesClosedFormBelowAndAboveTheBand)
       EXPECT_EQ(sol.q[network.dof(n, 1)], 0.0);    // mass-only DOFs stay at rest
     }
   }
-  // one pattern: one analysis per factorisation kind, one numeric factorisation per solve
-  if (GetParam() == LinearSolverChoice::Auto) {
-    EXPECT_LE(solver.num_analyses(), 2);
-  } else {
-    EXPECT_EQ(solver.num_analyses(), 1);
-    EXPECT_EQ(solver.num_factorisations(), 5);
-  }
+  // one pattern: one analysis, one numeric factorisation per solve
+  EXPECT_EQ(solver.num_analyses(), 1);
+  EXPECT_EQ(solver.num_factorisations(), 5);
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, DrivenChain,
-                         ::testing::Values(LinearSolverChoice::Auto, LinearSolverChoice::Ldlt, LinearSolverChoice::Lu),
+                         ::testing::ValuesIn(all_choices),
                          [](const ::testing::TestParamInfo<LinearSolverChoice> &info) {
                            return linear_solver_name(info.param);
                          });
@@ -120,32 +132,35 @@ TEST(HelmholtzSolver, DampedChainMatchesDenseComplexSolve)
   ASSERT_TRUE(network.has_damping());
 
   for (double omega : {0.5, 2.0, 3.1, 5.0}) {
-    HelmholtzSolver solver;    // auto: must take the complex LU
-    const HelmholtzSolution sol = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
-                                               network.mass_diagonal(), omega, source.dofs, source.values);
-    ASSERT_TRUE(sol.ok()) << sol.message;
-    EXPECT_EQ(sol.factorisation, "lu");
+    for (LinearSolverChoice choice : {LinearSolverChoice::Auto, LinearSolverChoice::Lu}) {
+      SCOPED_TRACE(linear_solver_name(choice));
+      HelmholtzSolver solver(choice);    // complex symmetric: MUMPS (auto) or complex LU
+      const HelmholtzSolution sol = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                                 network.mass_diagonal(), omega, source.dofs, source.values);
+      ASSERT_TRUE(sol.ok()) << sol.message;
+      EXPECT_EQ(sol.factorisation, expected_factorisation(choice));
 
-    // independent dense solve of the x DOFs of grains 1..N:
-    // (K + i w C - w^2 M) with K, C tridiagonal (free end), right-hand side (k + i w c) at grain 1
-    const Complex spring(k, omega * c);
-    Eigen::MatrixXcd a = Eigen::MatrixXcd::Zero(n_free, n_free);
-    for (int r = 0; r < n_free; ++r) {
-      a(r, r) = (r + 1 < n_free ? 2.0 : 1.0) * spring - omega * omega * m;
-      if (r + 1 < n_free) a(r, r + 1) = a(r + 1, r) = -spring;
+      // independent dense solve of the x DOFs of grains 1..N:
+      // (K + i w C - w^2 M) with K, C tridiagonal (free end), right-hand side (k + i w c) at grain 1
+      const Complex spring(k, omega * c);
+      Eigen::MatrixXcd a = Eigen::MatrixXcd::Zero(n_free, n_free);
+      for (int r = 0; r < n_free; ++r) {
+        a(r, r) = (r + 1 < n_free ? 2.0 : 1.0) * spring - omega * omega * m;
+        if (r + 1 < n_free) a(r, r + 1) = a(r + 1, r) = -spring;
+      }
+      Eigen::VectorXcd b = Eigen::VectorXcd::Zero(n_free);
+      b[0] = spring;
+      const Eigen::VectorXcd expected = a.partialPivLu().solve(b);
+      for (int r = 0; r < n_free; ++r)
+        EXPECT_LT(std::abs(sol.q[network.dof(r + 1, 0)] - expected[r]), 1e-10 * expected.cwiseAbs().maxCoeff());
+      EXPECT_GT(expected.imag().cwiseAbs().maxCoeff(), 1e-3);    // the damping matters
     }
-    Eigen::VectorXcd b = Eigen::VectorXcd::Zero(n_free);
-    b[0] = spring;
-    const Eigen::VectorXcd expected = a.partialPivLu().solve(b);
-    for (int r = 0; r < n_free; ++r)
-      EXPECT_LT(std::abs(sol.q[network.dof(r + 1, 0)] - expected[r]), 1e-10 * expected.cwiseAbs().maxCoeff());
-    EXPECT_GT(expected.imag().cwiseAbs().maxCoeff(), 1e-3);    // the damping matters
   }
 }
 
 TEST(HelmholtzSolver, ReusesSymbolicAnalysisWhilePatternIsUnchanged)
 {
-  for (LinearSolverChoice choice : {LinearSolverChoice::Ldlt, LinearSolverChoice::Lu}) {
+  for (LinearSolverChoice choice : all_choices) {
     SCOPED_TRACE(linear_solver_name(choice));
     const Source source = chain_source();
     HelmholtzSolver solver(choice);
@@ -207,7 +222,7 @@ TEST(HelmholtzSolver, SingularAtZeroFrequencyWithFloatingGrains)
                                {Contact{1, 0, x, 1.0, 0, 0, 0}, Contact{2, 1, x, 1.0, 0, 0, 0},
                                 Contact{4, 3, x, 1.0, 0, 0, 0}});
   const Source source = chain_source();
-  for (LinearSolverChoice choice : {LinearSolverChoice::Auto, LinearSolverChoice::Ldlt, LinearSolverChoice::Lu}) {
+  for (LinearSolverChoice choice : all_choices) {
     SCOPED_TRACE(linear_solver_name(choice));
     HelmholtzSolver solver(choice);
     const HelmholtzSolution sol = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
@@ -233,7 +248,7 @@ TEST(HelmholtzSolver, SingularOnAnEigenfrequency)
   const ContactNetwork network(2, ContactModel::Normal, std::vector<Grain>(2, Grain{1.0, 0.5}),
                                {Contact{1, 0, Eigen::Vector3d(1, 0, 0), 1.0, 0, 0, 0}});
   const Source source = chain_source();
-  for (LinearSolverChoice choice : {LinearSolverChoice::Auto, LinearSolverChoice::Ldlt, LinearSolverChoice::Lu}) {
+  for (LinearSolverChoice choice : all_choices) {
     SCOPED_TRACE(linear_solver_name(choice));
     HelmholtzSolver solver(choice);
     const HelmholtzSolution sol = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
@@ -278,19 +293,20 @@ TEST(HelmholtzSolver, RejectsInvalidInput)
   EXPECT_THROW(solver.solve(k, c, Eigen::VectorXd::Zero(m.size()), 1.0, source.dofs, source.values), SolverError);
   EXPECT_THROW(HelmholtzSolver(LinearSolverChoice::Auto, 0.0), SolverError);
   EXPECT_EQ(linear_solver_from_name("ldlt"), LinearSolverChoice::Ldlt);
+  EXPECT_EQ(linear_solver_from_name("mumps"), LinearSolverChoice::Mumps);
   try {
     linear_solver_from_name("cg");
     FAIL() << "unknown solver name accepted";
   } catch (const SolverError &e) {
-    EXPECT_NE(std::string(e.what()).find("auto, ldlt, lu"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("auto, ldlt, lu, mumps"), std::string::npos);
   }
 }
 
 TEST(HelmholtzSolver, EarlierFactorsPreconditionASlightlyChangedNetwork)
 {
-  // undamped (ldlt, lu) and damped (complex lu)
+  // undamped (real) and damped (complex) factorisations
   for (double c : {0.0, 0.05}) {
-    for (LinearSolverChoice choice : {LinearSolverChoice::Auto, LinearSolverChoice::Lu}) {
+    for (LinearSolverChoice choice : {LinearSolverChoice::Auto, LinearSolverChoice::Lu, LinearSolverChoice::Mumps}) {
       SCOPED_TRACE(linear_solver_name(choice) + (c > 0.0 ? " damped" : " undamped"));
       const Source source = chain_source();
       HelmholtzSolver solver(choice);
@@ -328,6 +344,62 @@ TEST(HelmholtzSolver, EarlierFactorsPreconditionASlightlyChangedNetwork)
       const HelmholtzSolution reference_third = fresh_third.solve(
           third.stiffness_matrix(), third.damping_matrix(), third.mass_diagonal(), 3.9, source.dofs, source.values);
       EXPECT_LT((sol.q - reference_third.q).norm(), 1e-7 * reference_third.q.norm());
+
+      // after that failure the next 4 solves factorise directly, even for tiny changes;
+      // the 5th is answered with the earlier factors again
+      const long reuses = solver.num_reuses();
+      for (int k = 1; k <= 5; ++k) {
+        std::vector<Contact> nudged = third.contacts();
+        nudged[3].kn *= 1.0 + 1e-4 * k;
+        const ContactNetwork net(2, ContactModel::Normal, third.grains(), nudged);
+        const long before = solver.num_factorisations();
+        sol = solver.solve(net.stiffness_matrix(), net.damping_matrix(), net.mass_diagonal(), 3.9, source.dofs,
+                           source.values);
+        ASSERT_TRUE(sol.ok()) << sol.message;
+        EXPECT_EQ(solver.num_factorisations(), before + (k <= 4 ? 1 : 0)) << "solve " << k;
+      }
+      EXPECT_EQ(solver.num_reuses(), reuses + 1);
+    }
+  }
+}
+
+TEST(HelmholtzSolver, IdenticalSystemReturnsTheEarlierSolution)
+{
+  // the same system twice (with or without reuse of factors), damped and undamped:
+  // no second factorisation, the same answer; any change of A or b factorises again
+  for (double c : {0.0, 0.1}) {
+    for (bool reuse : {false, true}) {
+      SCOPED_TRACE(std::string(reuse ? "reuse on" : "reuse off") + (c > 0.0 ? ", damped" : ""));
+      const ContactNetwork network = chain(20, 1.0, 2.0, c);
+      const Source source = chain_source();
+      HelmholtzSolver solver;
+      solver.set_reuse_factorisation(reuse);
+      const HelmholtzSolution first = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                                   network.mass_diagonal(), 1.3, source.dofs, source.values);
+      ASSERT_TRUE(first.ok()) << first.message;
+      const HelmholtzSolution again = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                                   network.mass_diagonal(), 1.3, source.dofs, source.values);
+      ASSERT_TRUE(again.ok()) << again.message;
+      EXPECT_EQ(solver.num_factorisations(), 1);
+      EXPECT_EQ(solver.num_reuses(), 1);
+      EXPECT_EQ(again.q, first.q);
+      EXPECT_EQ(again.relative_residual, first.relative_residual);
+      EXPECT_NE(again.factorisation.find("unchanged system"), std::string::npos) << again.factorisation;
+
+      // another amplitude of the source (b changes): solved anew
+      Source louder = source;
+      louder.values *= 2.0;
+      const HelmholtzSolution twice = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                                   network.mass_diagonal(), 1.3, louder.dofs, louder.values);
+      ASSERT_TRUE(twice.ok()) << twice.message;
+      EXPECT_EQ(twice.factorisation.find("unchanged system"), std::string::npos);
+      EXPECT_LT((twice.q - 2.0 * first.q).norm(), 1e-10 * first.q.norm());
+      // another frequency (A changes): solved anew
+      const HelmholtzSolution other = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                                   network.mass_diagonal(), 1.31, source.dofs, source.values);
+      ASSERT_TRUE(other.ok()) << other.message;
+      EXPECT_EQ(other.factorisation.find("unchanged system"), std::string::npos);
+      EXPECT_GT((other.q - first.q).norm(), 1e-6 * first.q.norm());
     }
   }
 }

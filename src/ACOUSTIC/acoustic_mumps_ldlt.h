@@ -1,0 +1,124 @@
+/* ----------------------------------------------------------------------
+   ACOUSTIC package numerics: sparse symmetric LDL^T factorisation with
+   MUMPS, on one or several MPI ranks.
+
+   MumpsLdlt<Scalar> wraps one MUMPS instance with sym = 2: multifrontal
+   LDL^T with 1x1 and 2x2 pivots (BLAS-3 on dense fronts), for real
+   symmetric indefinite matrices (Scalar = double, K - w^2 M above the
+   lowest eigenfrequency) and complex symmetric ones (Scalar =
+   std::complex<double>, K + i w C - w^2 M).  The interface is that of
+   Eigen's sparse solvers (analyzePattern / factorize / solve / info), so
+   the Helmholtz solver treats it like the SuiteSparse ones.
+
+   Several ranks: MUMPS factorises on every rank of the team's
+   communicator, with the matrix and the right-hand sides on the host
+   (rank 0 of the team).  The host drives: each of its calls first sends
+   the MUMPS job to the other ranks (MumpsTeam::order), which run it in
+   MumpsTeam::serve until the host calls MumpsTeam::release.  On one rank
+   (MPI_COMM_SELF) nothing is sent.  MPI must be initialised.
+
+   A team's instances are created lazily by the host's first analysis and
+   destroyed (collectively) by the destructors, which every rank of the
+   team must call in the same order.
+------------------------------------------------------------------------- */
+
+#ifndef ACOUSTIC_MUMPS_LDLT_H
+#define ACOUSTIC_MUMPS_LDLT_H
+
+#include <mpi.h>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <complex>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace Acoustic {
+
+class MumpsInstance;
+
+// The ranks that factorise together, and the channel on which the host
+// sends them the jobs of its instances.
+class MumpsTeam {
+ public:
+  // collective over comm (duplicated: the team's messages stay apart)
+  explicit MumpsTeam(MPI_Comm comm);
+  ~MumpsTeam();
+  MumpsTeam(const MumpsTeam &) = delete;
+  MumpsTeam &operator=(const MumpsTeam &) = delete;
+
+  bool host() const { return rank_ == 0; }
+  int size() const { return size_; }
+  MPI_Comm comm() const { return comm_; }
+
+  // other ranks: run the jobs the host orders until it calls release()
+  void serve();
+  // host: let the other ranks return from serve()
+  void release();
+
+ private:
+  friend class MumpsInstance;
+  int attach(MumpsInstance *instance);    // its number in the orders
+  void detach(int number);
+  void order(int number, int job);        // host: workers run `job` of instance `number`
+
+  MPI_Comm comm_;
+  int rank_ = 0, size_ = 1;
+  std::vector<MumpsInstance *> instances_;
+};
+
+template <typename Scalar> class MumpsLdlt {
+ public:
+  typedef Eigen::SparseMatrix<Scalar> MatrixType;
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Dense;
+
+  explicit MumpsLdlt(MumpsTeam &team);
+  ~MumpsLdlt();
+  MumpsLdlt(const MumpsLdlt &) = delete;
+  MumpsLdlt &operator=(const MumpsLdlt &) = delete;
+
+  // Host only.  a: symmetric, both triangles stored (the lower one is read).
+  // analyzePattern: fill-reducing ordering (MUMPS's choice) and symbolic factorisation;
+  // factorize: numeric factorisation of a matrix with the analysed pattern.
+  void analyzePattern(const MatrixType &a);
+  void factorize(const MatrixType &a);
+  void compute(const MatrixType &a)
+  {
+    analyzePattern(a);
+    if (info() == Eigen::Success) factorize(a);
+  }
+  // Success, NumericalIssue (singular matrix) or InvalidInput (other MUMPS errors)
+  Eigen::ComputationInfo info() const { return info_; }
+  // MUMPS's explanation of the last failure
+  const std::string &message() const { return message_; }
+
+  // solution of A x = b with the last factorisation (b: one column per right-hand side)
+  template <typename Rhs> Dense solve(const Eigen::MatrixBase<Rhs> &b) const
+  {
+    Dense x = b;
+    solve_in_place(x);
+    return x;
+  }
+  void solve_in_place(Dense &x) const;
+
+  // size of the last factors (entries of L), and the workspace relaxation
+  // (percent, MUMPS's ICNTL(14)) after the automatic increases
+  long factor_entries() const;
+  int workspace_relaxation() const;
+
+ private:
+  std::unique_ptr<MumpsInstance> instance_;
+  Eigen::ComputationInfo info_ = Eigen::Success;
+  std::string message_;
+  std::vector<int> rows_, cols_;    // lower triangle, 1-based
+  std::vector<Scalar> values_;
+};
+
+extern template class MumpsLdlt<double>;
+extern template class MumpsLdlt<std::complex<double>>;
+
+}    // namespace Acoustic
+
+#endif
