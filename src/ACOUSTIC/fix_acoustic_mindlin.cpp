@@ -16,7 +16,8 @@
 
    Two-time-scale coupling of an ultrasonic vibration to the DEM: every N
    steps the steady harmonic response of the contact network to a basal
-   drive is solved on rank 0, and each contact's friction factor is set
+   drive is solved (network gathered on rank 0; the MUMPS factorisation
+   runs on all ranks), and each contact's friction factor is set
    from the tangential vibration it feels (Mindlin law).
 ------------------------------------------------------------------------- */
 
@@ -165,7 +166,8 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
   for (double &s : stats) s = 0.0;
 
   network.reset(new VibrationNetwork(lmp, settings, CMD));
-  solver.reset(new Acoustic::HelmholtzSolver(solver_choice));
+  // collective: with solver auto or mumps every rank takes part in the factorisation
+  solver.reset(new Acoustic::HelmholtzSolver(solver_choice, 1e-6, world));
   // between two updates few contacts change: precondition with the last factors
   solver->set_reuse_factorisation(true);
 
@@ -304,7 +306,10 @@ void FixAcousticMindlin::update_factors()
     if (comm->me == 0) {
       bool good = true;
       solve_on_rank0(good);
+      solver->release_workers();
       ok = good ? 1 : 0;
+    } else {
+      solver->serve();    // factorisations and solves driven by rank 0
     }
     MPI_Bcast(&ok, 1, MPI_INT, 0, world);
     MPI_Bcast(stats + RESIDUAL, NREUSES - RESIDUAL + 1, MPI_DOUBLE, 0, world);
