@@ -6,6 +6,7 @@
 
 #include "acoustic_solver_error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -145,28 +146,86 @@ ContactJacobian ContactNetwork::contact_jacobian(const Contact &c) const
                                     grains_[c.j].radius);
 }
 
+// K (or C) directly in compressed column storage, without sorting triplets:
+// the columns of grain g hold the dofs_per_grain() x dofs_per_grain() blocks of
+// g and of its contact partners, in the order of their indices.
 Eigen::SparseMatrix<double> ContactNetwork::assemble(bool dashpots) const
 {
   const int ndof = dofs_per_grain();
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(contacts_.size() * 4 * ndof * ndof);
+  const int ngrains = num_grains();
+  auto coefficients = [&](const Contact &c) {
+    const double normal = dashpots ? c.cn : c.kn;
+    const double tangential = (model_ == ContactModel::Full) ? (dashpots ? c.ct : c.kt) : 0.0;
+    return std::make_pair(normal, tangential);
+  };
+  auto included = [&](const Contact &c) {
+    const std::pair<double, double> k = coefficients(c);
+    return !dashpots || k.first != 0.0 || k.second != 0.0;
+  };
+
+  // block rows of each grain's columns: itself and its partners, sorted, once
+  // each (no block at all for a grain without contact)
+  std::vector<int> first(ngrains + 1, 0);
+  for (const Contact &c : contacts_)
+    if (included(c)) {
+      ++first[c.i + 1];
+      ++first[c.j + 1];
+    }
+  for (int g = 0; g < ngrains; ++g) first[g + 1] += first[g] + (first[g + 1] > 0 ? 1 : 0);
+  std::vector<int> partners(first[ngrains]);
+  std::vector<int> filled(first.begin(), first.end() - 1);
+  for (int g = 0; g < ngrains; ++g)
+    if (first[g + 1] > first[g]) partners[filled[g]++] = g;
+  for (const Contact &c : contacts_)
+    if (included(c)) {
+      partners[filled[c.i]++] = c.j;
+      partners[filled[c.j]++] = c.i;
+    }
+  std::vector<int> nblocks(ngrains);
+  for (int g = 0; g < ngrains; ++g) {
+    const auto begin = partners.begin() + first[g], end = partners.begin() + first[g + 1];
+    std::sort(begin, end);
+    nblocks[g] = static_cast<int>(std::unique(begin, end) - begin);
+  }
+
+  // column starts: every column of grain g has nblocks[g] * ndof entries
+  const int n = num_dofs();
+  std::vector<int> outer(n + 1, 0);
+  for (int g = 0; g < ngrains; ++g)
+    for (int d = 0; d < ndof; ++d) outer[g * ndof + d + 1] = nblocks[g] * ndof;
+  for (int col = 0; col < n; ++col) outer[col + 1] += outer[col];
+  std::vector<int> inner(outer[n]);
+  std::vector<double> values(outer[n], 0.0);
+  for (int g = 0; g < ngrains; ++g)
+    for (int d = 0; d < ndof; ++d) {
+      int *rows = inner.data() + outer[g * ndof + d];
+      for (int b = 0; b < nblocks[g]; ++b)
+        for (int r = 0; r < ndof; ++r) rows[b * ndof + r] = partners[first[g] + b] * ndof + r;
+    }
+  // adds block (row grain h, column grain g) of a contact's local matrix
+  auto add_block = [&](int h, int g, const Eigen::Ref<const Eigen::MatrixXd> &block) {
+    const auto begin = partners.begin() + first[g], end = begin + nblocks[g];
+    const int b = static_cast<int>(std::lower_bound(begin, end, h) - begin);
+    for (int d = 0; d < ndof; ++d) {
+      double *column = values.data() + outer[g * ndof + d] + b * ndof;
+      for (int r = 0; r < ndof; ++r) column[r] += block(r, d);
+    }
+  };
+
   for (const Contact &c : contacts_) {
-    const double normal_coeff = dashpots ? c.cn : c.kn;
-    const double tangential_coeff = (model_ == ContactModel::Full) ? (dashpots ? c.ct : c.kt) : 0.0;
-    if (dashpots && normal_coeff == 0.0 && tangential_coeff == 0.0) continue;
+    if (!included(c)) continue;
+    const std::pair<double, double> k = coefficients(c);
     const Eigen::Matrix3d nn = c.normal * c.normal.transpose();
-    const Eigen::Matrix3d spring = normal_coeff * nn + tangential_coeff * (Eigen::Matrix3d::Identity() - nn);
+    const Eigen::Matrix3d spring = k.first * nn + k.second * (Eigen::Matrix3d::Identity() - nn);
     const ContactJacobian jac = contact_jacobian(c);
     const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12> local = jac.transpose() * spring * jac;
-    const int base[2] = {c.i * ndof, c.j * ndof};
-    for (int a = 0; a < 2 * ndof; ++a)
-      for (int b = 0; b < 2 * ndof; ++b)
-        triplets.emplace_back(base[a / ndof] + a % ndof, base[b / ndof] + b % ndof, local(a, b));
+    add_block(c.i, c.i, local.topLeftCorner(ndof, ndof));
+    add_block(c.j, c.j, local.bottomRightCorner(ndof, ndof));
+    add_block(c.i, c.j, local.topRightCorner(ndof, ndof));
+    add_block(c.j, c.i, local.bottomLeftCorner(ndof, ndof));
   }
-  Eigen::SparseMatrix<double> matrix(num_dofs(), num_dofs());
-  matrix.setFromTriplets(triplets.begin(), triplets.end());
-  matrix.makeCompressed();
-  return matrix;
+  return Eigen::Map<const Eigen::SparseMatrix<double>>(n, n, outer[n], outer.data(), inner.data(),
+                                                       values.data());
 }
 
 Eigen::SparseMatrix<double> ContactNetwork::stiffness_matrix() const

@@ -260,8 +260,18 @@ void VibrationNetwork::build(int groupbit, int marker_groupbit)
   sent_counts.resize(nprocs);
   for (int p = 0; p < nprocs; p++) sent_counts[p] = gcounts[p] / GRAIN_WORDS;
 
+  // grain index of an atom ID (IDs are at most the number of atoms in most
+  // systems: a table; sparse IDs: a binary search in the sorted IDs)
+  std::vector<int> index_by_tag;
+  const tagint max_tag = ngrains ? tags_all.back() : 0;
+  if (max_tag <= 4 * static_cast<tagint>(ngrains) + 1024) {
+    index_by_tag.assign(max_tag + 1, -1);
+    for (int g = 0; g < ngrains; g++) index_by_tag[tags_all[g]] = g;
+  }
   auto index_of = [&](double t) {
-    auto it = std::lower_bound(tags_all.begin(), tags_all.end(), static_cast<tagint>(t));
+    const tagint id = static_cast<tagint>(t);
+    if (!index_by_tag.empty()) return index_by_tag[id];
+    auto it = std::lower_bound(tags_all.begin(), tags_all.end(), id);
     return static_cast<int>(it - tags_all.begin());
   };
   const int ncontacts = static_cast<int>(call.size() / CONTACT_WORDS);
