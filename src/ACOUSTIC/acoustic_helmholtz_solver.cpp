@@ -267,6 +267,25 @@ template <typename Scalar> bool identical(const Eigen::SparseMatrix<Scalar> &x, 
       std::equal(x.valuePtr(), x.valuePtr() + x.nonZeros(), y.valuePtr());
 }
 
+// same pattern, and values within rel * (largest value) of each other: the
+// same system up to round-off (e.g. atoms remapped across a periodic boundary)
+template <typename Scalar>
+bool nearly_identical(const Eigen::SparseMatrix<Scalar> &x, const Eigen::SparseMatrix<Scalar> &y, double rel)
+{
+  if (x.rows() != y.rows() || x.nonZeros() != y.nonZeros() || !x.isCompressed() || !y.isCompressed() ||
+      x.nonZeros() == 0 ||
+      !std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.outerSize() + 1, y.outerIndexPtr()) ||
+      !std::equal(x.innerIndexPtr(), x.innerIndexPtr() + x.nonZeros(), y.innerIndexPtr()))
+    return false;
+  const auto xv = Eigen::Map<const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>>(x.valuePtr(), x.nonZeros());
+  const auto yv = Eigen::Map<const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>>(y.valuePtr(), y.nonZeros());
+  return (xv - yv).cwiseAbs().maxCoeff() <= rel * xv.cwiseAbs().maxCoeff();
+}
+bool nearly_identical(const Eigen::VectorXcd &x, const Eigen::VectorXcd &y, double rel)
+{
+  return x.size() == y.size() && x.size() > 0 && (x - y).cwiseAbs().maxCoeff() <= rel * x.cwiseAbs().maxCoeff();
+}
+
 struct Attempt {
   bool factorised = false;
   Eigen::VectorXcd x;
@@ -541,6 +560,12 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
   auto same_as_last = [&](const Eigen::VectorXcd &b) {
     return f.last != Factorisations::NONE && f.last_free_dofs == part.free_dofs && b == f.last_rhs;
   };
+  // the last system up to round-off: its factors and solution answer it (one
+  // BiCGSTAB step at most), even while direct factorisations are preferred
+  auto nearly_last = [&](const Eigen::VectorXcd &b) {
+    return reuse_ && f.last != Factorisations::NONE && f.last_free_dofs == part.free_dofs &&
+        nearly_identical(f.last_rhs, b, 1e-10);
+  };
   auto take_last = [&]() {
     unchanged = true;
     used = f.last;
@@ -554,15 +579,16 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     timings_.solve += seconds_since(start);
     rhs_zero = rhs.squaredNorm() == 0.0;
     if (nfree > 0 && !rhs_zero) {
+      const bool reuse_now = can_reuse || (nearly_last(rhs) && nearly_identical(f.last_complex_system, a, 1e-10));
       if (same_as_last(rhs) && identical(f.last_complex_system, a)) {
         take_last();
-      } else if (can_reuse && f.last == Factorisations::LU_COMPLEX &&
+      } else if (reuse_now && f.last == Factorisations::LU_COMPLEX &&
           few_changes(f.lu_complex_pattern.changed_columns(a))) {
         tried_reuse = true;
         attempt = iterate_with_earlier_factors(f.lu_complex, a, rhs, f.last_x, reuse_iterations_,
                                                reuse_tolerance, timings_);
         if (attempt.factorised && attempt.residual <= residual_tolerance_) used = f.last;
-      } else if (can_reuse && f.last == Factorisations::MUMPS_COMPLEX &&
+      } else if (reuse_now && f.last == Factorisations::MUMPS_COMPLEX &&
                  few_changes(f.mumps_complex_pattern.changed_columns(a))) {
         tried_reuse = true;
         attempt = iterate_with_earlier_factors(f.mumps_complex, a, rhs, f.last_x, reuse_iterations_,
@@ -593,13 +619,14 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     timings_.solve += seconds_since(start);
     rhs_zero = rhs.squaredNorm() == 0.0;
     if (nfree > 0 && !rhs_zero) {
-      const Eigen::Index changed = !can_reuse                        ? nfree
+      const bool reuse_now = can_reuse || (nearly_last(rhs) && nearly_identical(f.last_real_system, a, 1e-10));
+      const Eigen::Index changed = !reuse_now                        ? nfree
           : (f.last == Factorisations::LDLT)      ? f.ldlt_pattern.changed_columns(a)
           : (f.last == Factorisations::MUMPS_REAL) ? f.mumps_real_pattern.changed_columns(a)
                                                   : f.lu_real_pattern.changed_columns(a);
       if (same_as_last(rhs) && identical(f.last_real_system, a)) {
         take_last();
-      } else if (can_reuse &&
+      } else if (reuse_now &&
                  (f.last == Factorisations::LDLT || f.last == Factorisations::LU_REAL ||
                   f.last == Factorisations::MUMPS_REAL) &&
                  few_changes(changed)) {

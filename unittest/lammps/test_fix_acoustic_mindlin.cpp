@@ -284,6 +284,32 @@ TEST(FixMindlinLaw, FrequencyZeroSetsEveryFactorToOne)
   for (const auto &kv : AcousticTest::friction_factors(L)) EXPECT_EQ(kv.second, 1.0);
 }
 
+TEST(FixMindlinLaw, RunThatStartsAtTheLastUpdateDoesNotFactoriseAgain)
+{
+  // a deck made of short runs of N steps (as the tilt ramps): the update at the
+  // setup of each run sees the system of the update that ended the last one
+  LammpsInstance L;
+  L.commands(layer_deck());
+  L.command("fix ac all acoustic/mindlin 50 frequency 3.0 amplitude 5e-4 source base");
+  L.command("run 50");    // updates at setup and at step 50
+  LAMMPS_NS::Fix *fix = find_fix(L, "ac");
+  const double factorisations = fix->compute_vector(11), reuses = fix->compute_vector(12);
+  EXPECT_EQ(factorisations, 2.0);
+  const std::map<ContactKey, double> before = AcousticTest::friction_factors(L);
+  L.command("fix grav grains gravity 1.0 vector 0.1 -1 0");    // new tilt, atoms unmoved
+  L.command("run 0");
+  // the same system, or the same up to round-off (atoms remapped across the
+  // periodic boundary at setup): no factorisation
+  EXPECT_EQ(fix->compute_vector(11), factorisations);
+  EXPECT_EQ(fix->compute_vector(12), reuses + 1.0);
+  const std::map<ContactKey, double> after = AcousticTest::friction_factors(L);
+  ASSERT_EQ(after.size(), before.size());
+  for (const auto &kv : before) EXPECT_NEAR(after.at(kv.first), kv.second, 1e-9);
+  L.command("run 50");    // the atoms move: a new factorisation at step 100
+  EXPECT_EQ(fix->compute_vector(11) + fix->compute_vector(12), factorisations + reuses + 3.0);
+  EXPECT_GE(fix->compute_vector(11), factorisations);
+}
+
 // ---------------------------------------------------------------------------
 // 3. 1 vs 2 ranks, restart
 

@@ -386,6 +386,16 @@ TEST(HelmholtzSolver, IdenticalSystemReturnsTheEarlierSolution)
       EXPECT_EQ(again.relative_residual, first.relative_residual);
       EXPECT_NE(again.factorisation.find("unchanged system"), std::string::npos) << again.factorisation;
 
+      // the same up to round-off: with reuse, the earlier factors answer it
+      std::vector<Contact> contacts = network.contacts();
+      contacts[4].kn *= 1.0 + 1e-13;
+      const ContactNetwork nudged(2, ContactModel::Normal, network.grains(), contacts);
+      const HelmholtzSolution close = solver.solve(nudged.stiffness_matrix(), nudged.damping_matrix(),
+                                                   nudged.mass_diagonal(), 1.3, source.dofs, source.values);
+      ASSERT_TRUE(close.ok()) << close.message;
+      EXPECT_EQ(solver.num_factorisations(), reuse ? 1 : 2);
+      EXPECT_LT((close.q - first.q).norm(), 1e-9 * first.q.norm());
+
       // another amplitude of the source (b changes): solved anew
       Source louder = source;
       louder.values *= 2.0;
