@@ -216,6 +216,15 @@ Eigen::SparseMatrix<double> ContactNetwork::assemble(bool dashpots) const
     if (!included(c)) continue;
     const std::pair<double, double> k = coefficients(c);
     const Eigen::Matrix3d nn = c.normal * c.normal.transpose();
+    if (model_ == ContactModel::Normal) {
+      // translations only: blocks +-k_n n n^T, no Jacobian product needed
+      const Eigen::Matrix3d block = k.first * nn, negative = -block;
+      add_block(c.i, c.i, block.topLeftCorner(ndof, ndof));
+      add_block(c.j, c.j, block.topLeftCorner(ndof, ndof));
+      add_block(c.i, c.j, negative.topLeftCorner(ndof, ndof));
+      add_block(c.j, c.i, negative.topLeftCorner(ndof, ndof));
+      continue;
+    }
     const Eigen::Matrix3d spring = k.first * nn + k.second * (Eigen::Matrix3d::Identity() - nn);
     const ContactJacobian jac = contact_jacobian(c);
     const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12> local = jac.transpose() * spring * jac;

@@ -405,12 +405,12 @@ Attempt iterate_with_earlier_factors(const Factor &factor, const Eigen::SparseMa
       x.col(col).setZero();
       continue;
     }
-    // two iterations first: a network that changed too much for the earlier
+    // one iteration first: a network that changed too much for the earlier
     // factors shows it at once, and is better factorised than iterated on
-    const int first = std::min(2, max_iterations);
+    const int first = std::min(1, max_iterations);
     bicgstab.setMaxIterations(first);
     x.col(col) = bicgstab.solveWithGuess(b.col(col), x0.col(col));
-    if (bicgstab.info() != Eigen::Success && max_iterations > first && bicgstab.error() <= 1e-4) {
+    if (bicgstab.info() != Eigen::Success && max_iterations > first && bicgstab.error() <= 1e-2) {
       bicgstab.setMaxIterations(max_iterations - first);
       const Dense guess = x.col(col);
       x.col(col) = bicgstab.solveWithGuess(b.col(col), guess);
