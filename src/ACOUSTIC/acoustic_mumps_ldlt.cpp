@@ -300,6 +300,12 @@ template <typename Scalar> int MumpsLdlt<Scalar>::workspace_relaxation() const
   return m.initialised ? icntl_value(m.data, 14) : 0;
 }
 
+template <typename Scalar> double MumpsLdlt<Scalar>::local_factorisation_flops() const
+{
+  const MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
+  return m.initialised ? static_cast<double>(m.data.rinfo[2]) : 0.0;    // RINFO(3)
+}
+
 template class MumpsLdlt<double>;
 template class MumpsLdlt<std::complex<double>>;
 

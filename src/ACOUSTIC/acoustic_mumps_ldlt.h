@@ -107,6 +107,9 @@ template <typename Scalar> class MumpsLdlt {
   // (percent, MUMPS's ICNTL(14)) after the automatic increases
   long factor_entries() const;
   int workspace_relaxation() const;
+  // floating-point operations of the last factorisation done on this rank
+  // (any rank of the team: shows how the work was shared)
+  double local_factorisation_flops() const;
 
  private:
   std::unique_ptr<MumpsInstance> instance_;

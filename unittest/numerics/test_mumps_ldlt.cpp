@@ -220,3 +220,29 @@ TEST(MumpsParallel, TeamOfAllRanksGivesTheSingleRankAnswer)
     }
   }
 }
+
+// The factorisation work is shared by the ranks of the team (a network large
+// enough for MUMPS to split its elimination tree), and the host's answer is
+// that of a dense solve
+TEST(MumpsParallel, EveryRankFactorises)
+{
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  MumpsTeam team(MPI_COMM_WORLD);
+  MumpsLdlt<double> ldlt(team);
+  const Eigen::SparseMatrix<double> a = helmholtz_matrix<double>(70, 50, 1.1, 0.0);    // 6860 DOFs
+  if (team.host()) {
+    ldlt.compute(a);
+    ASSERT_EQ(ldlt.info(), Eigen::Success) << ldlt.message();
+    const Eigen::MatrixXd b = random_rhs<double>(static_cast<int>(a.rows()), 1);
+    const Eigen::MatrixXd x = ldlt.solve(b);
+    team.release();
+    EXPECT_LT((a * x - b).norm(), 1e-10 * b.norm());
+  } else {
+    team.serve();
+  }
+  const double mine = ldlt.local_factorisation_flops();
+  std::vector<double> all(size);
+  MPI_Allgather(&mine, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
+  for (int r = 0; r < size; ++r) EXPECT_GT(all[r], 0.0) << "rank " << r << " did no factorisation work";
+}
