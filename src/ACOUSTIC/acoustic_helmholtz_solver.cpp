@@ -286,8 +286,19 @@ bool nearly_identical(const Eigen::VectorXcd &x, const Eigen::VectorXcd &y, doub
   return x.size() == y.size() && x.size() > 0 && (x - y).cwiseAbs().maxCoeff() <= rel * x.cwiseAbs().maxCoeff();
 }
 
+// why a factorisation failed, when the library says more than info()
+template <typename Solver> std::string failure_detail(const Solver &)
+{
+  return "";
+}
+template <typename Scalar> std::string failure_detail(const MumpsLdlt<Scalar> &solver)
+{
+  return solver.message();
+}
+
 struct Attempt {
   bool factorised = false;
+  std::string detail;    // the library's explanation of a failure
   Eigen::VectorXcd x;
   double residual = 0.0;
 };
@@ -340,6 +351,7 @@ Attempt factorise_and_solve(Solver &solver, SparsityPattern &pattern, const Eige
     if (solver.info() != Eigen::Success) {
       pattern = SparsityPattern();    // analyse again next time
       timings.analysis += seconds_since(start);
+      attempt.detail = failure_detail(solver);
       return attempt;
     }
     pattern.store(a);
@@ -350,7 +362,10 @@ Attempt factorise_and_solve(Solver &solver, SparsityPattern &pattern, const Eige
   solver.factorize(a);
   ++num_factorisations;
   timings.factorisation += seconds_since(start);
-  if (numerically_singular(solver)) return attempt;
+  if (numerically_singular(solver)) {
+    attempt.detail = failure_detail(solver);
+    return attempt;
+  }
   attempt.factorised = true;
 
   start = Clock::now();
@@ -715,6 +730,7 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     result.message = "the Helmholtz matrix is singular" + where +
         ": the frequency is an eigenfrequency of the network, or (at omega = 0) part of the network "
         "is not held by the source; change the frequency, add damping, or fix the floating grains";
+    if (!attempt.detail.empty()) result.message += " [" + attempt.detail + "]";
     return result;
   }
   result.relative_residual = attempt.residual;
