@@ -249,6 +249,14 @@ Eigen::VectorXcd multiply(const Eigen::SparseMatrix<Complex> &a, const Eigen::Ve
   return a * x;
 }
 
+// ||A x - b|| / ||b||, infinite when not finite
+template <typename Scalar>
+double relative_residual(const Eigen::SparseMatrix<Scalar> &a, const Eigen::VectorXcd &x, const Eigen::VectorXcd &b)
+{
+  const double residual = (multiply(a, x) - b).norm() / b.norm();
+  return std::isfinite(residual) ? residual : std::numeric_limits<double>::infinity();
+}
+
 template <typename Solver> bool numerically_singular(const Solver &solver)
 {
   return solver.info() != Eigen::Success;
@@ -256,34 +264,6 @@ template <typename Solver> bool numerically_singular(const Solver &solver)
 template <typename Matrix> bool numerically_singular(const UmfpackLU<Matrix> &solver)
 {
   return solver.info() != Eigen::Success || solver.singular();
-}
-
-// same size, pattern and values (compressed matrices)
-template <typename Scalar> bool identical(const Eigen::SparseMatrix<Scalar> &x, const Eigen::SparseMatrix<Scalar> &y)
-{
-  return x.rows() == y.rows() && x.cols() == y.cols() && x.nonZeros() == y.nonZeros() && x.isCompressed() &&
-      y.isCompressed() && std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.outerSize() + 1, y.outerIndexPtr()) &&
-      std::equal(x.innerIndexPtr(), x.innerIndexPtr() + x.nonZeros(), y.innerIndexPtr()) &&
-      std::equal(x.valuePtr(), x.valuePtr() + x.nonZeros(), y.valuePtr());
-}
-
-// same pattern, and values within rel * (largest value) of each other: the
-// same system up to round-off (e.g. atoms remapped across a periodic boundary)
-template <typename Scalar>
-bool nearly_identical(const Eigen::SparseMatrix<Scalar> &x, const Eigen::SparseMatrix<Scalar> &y, double rel)
-{
-  if (x.rows() != y.rows() || x.nonZeros() != y.nonZeros() || !x.isCompressed() || !y.isCompressed() ||
-      x.nonZeros() == 0 ||
-      !std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.outerSize() + 1, y.outerIndexPtr()) ||
-      !std::equal(x.innerIndexPtr(), x.innerIndexPtr() + x.nonZeros(), y.innerIndexPtr()))
-    return false;
-  const auto xv = Eigen::Map<const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>>(x.valuePtr(), x.nonZeros());
-  const auto yv = Eigen::Map<const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>>(y.valuePtr(), y.nonZeros());
-  return (xv - yv).cwiseAbs().maxCoeff() <= rel * xv.cwiseAbs().maxCoeff();
-}
-bool nearly_identical(const Eigen::VectorXcd &x, const Eigen::VectorXcd &y, double rel)
-{
-  return x.size() == y.size() && x.size() > 0 && (x - y).cwiseAbs().maxCoeff() <= rel * x.cwiseAbs().maxCoeff();
 }
 
 // why a factorisation failed, when the library says more than info()
@@ -328,12 +308,6 @@ struct HelmholtzSolver::Factorisations {
   Kind last = NONE;
   std::vector<int> last_free_dofs;
   Eigen::VectorXcd last_x;
-  // that solve's system (A_FF, b), to answer an identical one at once (e.g. the
-  // setup of a run that follows an update at the same step)
-  Eigen::SparseMatrix<double> last_real_system;
-  Eigen::SparseMatrix<Complex> last_complex_system;
-  Eigen::VectorXcd last_rhs;
-  double last_residual = 0.0;
 };
 
 namespace {
@@ -370,9 +344,7 @@ Attempt factorise_and_solve(Solver &solver, SparsityPattern &pattern, const Eige
 
   start = Clock::now();
   attempt.x = solve_with(solver, rhs, Scalar());
-  const double residual_norm = (multiply(a, attempt.x) - rhs).norm();
-  attempt.residual = residual_norm / rhs.norm();
-  if (!std::isfinite(attempt.residual)) attempt.residual = std::numeric_limits<double>::infinity();
+  attempt.residual = relative_residual(a, attempt.x, rhs);
   timings.solve += seconds_since(start);
   return attempt;
 }
@@ -436,8 +408,7 @@ Attempt iterate_with_earlier_factors(const Factor &factor, const Eigen::SparseMa
   if (converged) {
     attempt.factorised = true;
     attempt.x = from_columns(x);
-    attempt.residual = (multiply(a, attempt.x) - rhs).norm() / rhs.norm();
-    if (!std::isfinite(attempt.residual)) attempt.residual = std::numeric_limits<double>::infinity();
+    attempt.residual = relative_residual(a, attempt.x, rhs);
   }
   timings.solve += seconds_since(start);
   return attempt;
@@ -567,26 +538,22 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
   };
   const double reuse_tolerance = 1e-2 * residual_tolerance_;
   Factorisations::Kind used = Factorisations::NONE;
-  bool iterated = false, tried_reuse = false, unchanged = false;
-  auto succeeded = [&](const Attempt &t) {
-    return t.factorised && t.x.allFinite() && t.residual <= residual_tolerance_;
+  bool iterated = false, tried_reuse = false, previous_solution = false;
+  // the last solution may still solve this system to the reuse tolerance (the
+  // same network, or the same up to round-off, e.g. at the setup of a run that
+  // starts at the step of the last update): one product A x, no factorisation,
+  // whatever the back-off
+  auto previous_solution_applies = [&]() {
+    return reuse_ && f.last != Factorisations::NONE && f.last_free_dofs == part.free_dofs;
   };
-  // the system of the last successful solve again: its solution, without factorising
-  auto same_as_last = [&](const Eigen::VectorXcd &b) {
-    return f.last != Factorisations::NONE && f.last_free_dofs == part.free_dofs && b == f.last_rhs;
-  };
-  // the last system up to round-off: its factors and solution answer it (one
-  // BiCGSTAB step at most), even while direct factorisations are preferred
-  auto nearly_last = [&](const Eigen::VectorXcd &b) {
-    return reuse_ && f.last != Factorisations::NONE && f.last_free_dofs == part.free_dofs &&
-        nearly_identical(f.last_rhs, b, 1e-10);
-  };
-  auto take_last = [&]() {
-    unchanged = true;
+  auto take_previous_solution = [&](double residual) {
+    if (!(residual <= reuse_tolerance)) return false;
+    previous_solution = true;
     used = f.last;
     attempt.factorised = true;
     attempt.x = f.last_x;
-    attempt.residual = f.last_residual;
+    attempt.residual = residual;
+    return true;
   };
   if (damped) {
     Eigen::SparseMatrix<Complex> a;
@@ -594,16 +561,14 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     timings_.solve += seconds_since(start);
     rhs_zero = rhs.squaredNorm() == 0.0;
     if (nfree > 0 && !rhs_zero) {
-      const bool reuse_now = can_reuse || (nearly_last(rhs) && nearly_identical(f.last_complex_system, a, 1e-10));
-      if (same_as_last(rhs) && identical(f.last_complex_system, a)) {
-        take_last();
-      } else if (reuse_now && f.last == Factorisations::LU_COMPLEX &&
+      if (previous_solution_applies() && take_previous_solution(relative_residual(a, f.last_x, rhs))) {
+      } else if (can_reuse && f.last == Factorisations::LU_COMPLEX &&
           few_changes(f.lu_complex_pattern.changed_columns(a))) {
         tried_reuse = true;
         attempt = iterate_with_earlier_factors(f.lu_complex, a, rhs, f.last_x, reuse_iterations_,
                                                reuse_tolerance, timings_);
         if (attempt.factorised && attempt.residual <= residual_tolerance_) used = f.last;
-      } else if (reuse_now && f.last == Factorisations::MUMPS_COMPLEX &&
+      } else if (can_reuse && f.last == Factorisations::MUMPS_COMPLEX &&
                  few_changes(f.mumps_complex_pattern.changed_columns(a))) {
         tried_reuse = true;
         attempt = iterate_with_earlier_factors(f.mumps_complex, a, rhs, f.last_x, reuse_iterations_,
@@ -623,10 +588,6 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
       } else {
         ++num_reuses_;
       }
-      if (succeeded(attempt)) {
-        f.last_complex_system = a;
-        f.last_real_system = Eigen::SparseMatrix<double>();
-      }
     }
   } else {
     Eigen::SparseMatrix<double> a;
@@ -634,14 +595,12 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     timings_.solve += seconds_since(start);
     rhs_zero = rhs.squaredNorm() == 0.0;
     if (nfree > 0 && !rhs_zero) {
-      const bool reuse_now = can_reuse || (nearly_last(rhs) && nearly_identical(f.last_real_system, a, 1e-10));
-      const Eigen::Index changed = !reuse_now                        ? nfree
+      const Eigen::Index changed = !can_reuse                        ? nfree
           : (f.last == Factorisations::LDLT)      ? f.ldlt_pattern.changed_columns(a)
           : (f.last == Factorisations::MUMPS_REAL) ? f.mumps_real_pattern.changed_columns(a)
                                                   : f.lu_real_pattern.changed_columns(a);
-      if (same_as_last(rhs) && identical(f.last_real_system, a)) {
-        take_last();
-      } else if (reuse_now &&
+      if (previous_solution_applies() && take_previous_solution(relative_residual(a, f.last_x, rhs))) {
+      } else if (can_reuse &&
                  (f.last == Factorisations::LDLT || f.last == Factorisations::LU_REAL ||
                   f.last == Factorisations::MUMPS_REAL) &&
                  few_changes(changed)) {
@@ -676,10 +635,6 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
                                         num_analyses_, num_factorisations_, timings_);
         }
       }
-      if (succeeded(attempt)) {
-        f.last_real_system = a;
-        f.last_complex_system = Eigen::SparseMatrix<Complex>();
-      }
     }
   }
   if (nfree == 0 || rhs_zero) return result;
@@ -698,28 +653,24 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     default:
       break;
   }
-  if (unchanged)
-    result.factorisation += " (unchanged system, earlier solution)";
+  if (previous_solution)
+    result.factorisation += " (earlier solution)";
   else if (iterated)
     result.factorisation += " (earlier factors, BiCGSTAB)";
   // after a failed attempt factorise directly for the next 4, 8, 16 ... 64 solves
   if (tried_reuse && !iterated) {
     reuse_failures_ = std::min(reuse_failures_ + 1, 5);
     reuse_backoff_ = 2 << reuse_failures_;
-  } else if (iterated && !unchanged) {
+  } else if (iterated && !previous_solution) {
     reuse_failures_ = 0;
   }
   // remember a good factorisation and its solution for the next solve
-  if (succeeded(attempt)) {
+  if (attempt.factorised && attempt.x.allFinite() && attempt.residual <= residual_tolerance_) {
     f.last = used;
     f.last_free_dofs = part.free_dofs;
     f.last_x = attempt.x;
-    f.last_rhs = rhs;
-    f.last_residual = attempt.residual;
   } else {
     f.last = Factorisations::NONE;
-    f.last_real_system = Eigen::SparseMatrix<double>();
-    f.last_complex_system = Eigen::SparseMatrix<Complex>();
   }
 
   const std::string where = " (omega = " + std::to_string(omega) + ", " + std::to_string(nfree) +

@@ -19,9 +19,7 @@
    The solver object keeps the symbolic analysis (fill-reducing ordering) of
    each factorisation and only refactorises numerically while the sparsity
    pattern of the free-free matrix stays the same; a new pattern is analysed
-   again.  A system identical to the last one solved (same A_FF and b, bit
-   for bit) gets that solution back without any factorisation.  Counters and
-   timings let the caller check this.
+   again.  Counters and timings let the caller check this.
 
    Several ranks: construct the solver on every rank of the communicator
    (collective).  The host (rank 0) calls solve() with the matrices; the
@@ -108,14 +106,19 @@ class HelmholtzSolver {
   void release_workers();
   bool host() const;
 
-  // Reuse of earlier factors: when the free DOFs are those of the last successful
-  // solve and at most changed_fraction of their columns (and no more than 100)
-  // changed pattern (few contacts opened or closed), first try BiCGSTAB preconditioned with that
-  // solve's factorisation, starting from its solution; factorise only if it does
-  // not converge within max_iterations, or has not reduced the residual below 1e-4
-  // after 2 iterations.  After a failed attempt the next 4 solves factorise
-  // directly, after consecutive failures 8, 16, ... 64 (the network changes too
-  // fast for the earlier factors); a success resets this.  Off by default.
+  // Reuse of earlier work (off by default).  When the free DOFs are those of
+  // the last successful solve:
+  // - its solution is taken as it is if it solves the new system to
+  //   1e-2 * residual_tolerance (the same network, or the same up to
+  //   round-off): one product A x, no factorisation;
+  // - otherwise, if at most changed_fraction of the columns (and no more than
+  //   100) changed pattern (few contacts opened or closed), BiCGSTAB
+  //   preconditioned with that solve's factorisation starts from its solution;
+  //   the matrix is factorised if it does not converge within max_iterations,
+  //   or has not brought the residual below 1e-2 after one iteration.  After a
+  //   failed attempt the next 4 solves factorise directly, after consecutive
+  //   failures 8, 16, ... 64 (the network changes too fast for the earlier
+  //   factors); a success resets this.
   void set_reuse_factorisation(bool reuse, int max_iterations = 10, double changed_fraction = 0.01)
   {
     reuse_ = reuse;
@@ -123,8 +126,8 @@ class HelmholtzSolver {
     reuse_fraction_ = changed_fraction;
   }
   bool reuse_factorisation() const { return reuse_; }
-  // solves answered without a factorisation, since construction: by BiCGSTAB
-  // with earlier factors, or with the earlier solution of an identical system
+  // solves answered without a factorisation, since construction: by the
+  // earlier solution, or by BiCGSTAB with earlier factors
   long num_reuses() const { return num_reuses_; }
 
   LinearSolverChoice choice() const { return choice_; }

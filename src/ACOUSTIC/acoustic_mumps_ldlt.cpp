@@ -37,10 +37,6 @@ template <typename Struct> MUMPS_INT &icntl(Struct &s, int k)
 {
   return s.icntl[k - 1];
 }
-template <typename Struct> MUMPS_INT icntl_value(const Struct &s, int k)
-{
-  return s.icntl[k - 1];
-}
 template <typename Struct> MUMPS_INT infog(const Struct &s, int k)
 {
   return s.infog[k - 1];
@@ -292,12 +288,6 @@ template <typename Scalar> long MumpsLdlt<Scalar>::factor_entries() const
   const MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
   const long entries = infog(m.data, 29);
   return entries < 0 ? -entries * 1000000L : entries;    // negative: millions
-}
-
-template <typename Scalar> int MumpsLdlt<Scalar>::workspace_relaxation() const
-{
-  const MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
-  return m.initialised ? icntl_value(m.data, 14) : 0;
 }
 
 template <typename Scalar> double MumpsLdlt<Scalar>::local_factorisation_flops() const

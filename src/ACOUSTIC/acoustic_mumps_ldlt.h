@@ -103,10 +103,8 @@ template <typename Scalar> class MumpsLdlt {
   }
   void solve_in_place(Dense &x) const;
 
-  // size of the last factors (entries of L), and the workspace relaxation
-  // (percent, MUMPS's ICNTL(14)) after the automatic increases
+  // size of the last factors (entries of L)
   long factor_entries() const;
-  int workspace_relaxation() const;
   // floating-point operations of the last factorisation done on this rank
   // (any rank of the team: shows how the work was shared)
   double local_factorisation_flops() const;

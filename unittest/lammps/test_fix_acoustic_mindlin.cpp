@@ -299,15 +299,14 @@ TEST(FixMindlinLaw, RunThatStartsAtTheLastUpdateDoesNotFactoriseAgain)
   L.command("fix grav grains gravity 1.0 vector 0.1 -1 0");    // new tilt, atoms unmoved
   L.command("run 0");
   // the same system, or the same up to round-off (atoms remapped across the
-  // periodic boundary at setup): no factorisation
+  // periodic boundary at setup): the last solution, no factorisation
   EXPECT_EQ(fix->compute_vector(11), factorisations);
   EXPECT_EQ(fix->compute_vector(12), reuses + 1.0);
   const std::map<ContactKey, double> after = AcousticTest::friction_factors(L);
   ASSERT_EQ(after.size(), before.size());
   for (const auto &kv : before) EXPECT_NEAR(after.at(kv.first), kv.second, 1e-9);
-  L.command("run 50");    // the atoms move: a new factorisation at step 100
+  L.command("run 50");    // the setup (atoms unmoved) and step 100: two more solves
   EXPECT_EQ(fix->compute_vector(11) + fix->compute_vector(12), factorisations + reuses + 3.0);
-  EXPECT_GE(fix->compute_vector(11), factorisations);
 }
 
 // ---------------------------------------------------------------------------

@@ -255,8 +255,9 @@ TEST(HelmholtzSolver, SingularOnAnEigenfrequency)
                                                network.mass_diagonal(), 1.0, source.dofs, source.values);
     EXPECT_FALSE(sol.ok());
     EXPECT_EQ(sol.status, SolveStatus::FactorisationFailed);
-    if (choice == LinearSolverChoice::Mumps || choice == LinearSolverChoice::Auto)
+    if (choice == LinearSolverChoice::Mumps || choice == LinearSolverChoice::Auto) {
       EXPECT_NE(sol.message.find("MUMPS error INFOG(1) = -10"), std::string::npos) << sol.message;
+    }
     EXPECT_TRUE(sol.q.allFinite());
     EXPECT_TRUE(std::isfinite(sol.relative_residual));
     // just off resonance it solves: q_1 = k / (k - w^2 m)
@@ -365,10 +366,11 @@ TEST(HelmholtzSolver, EarlierFactorsPreconditionASlightlyChangedNetwork)
   }
 }
 
-TEST(HelmholtzSolver, IdenticalSystemReturnsTheEarlierSolution)
+TEST(HelmholtzSolver, LastSolutionAnswersTheSameSystem)
 {
-  // the same system twice (with or without reuse of factors), damped and undamped:
-  // no second factorisation, the same answer; any change of A or b factorises again
+  // with reuse on, the same system, or the same up to round-off, is answered by the
+  // last solution whatever the back-off; with reuse off it is factorised again.
+  // Any real change of A or b is solved anew.
   for (double c : {0.0, 0.1}) {
     for (bool reuse : {false, true}) {
       SCOPED_TRACE(std::string(reuse ? "reuse on" : "reuse off") + (c > 0.0 ? ", damped" : ""));
@@ -382,35 +384,34 @@ TEST(HelmholtzSolver, IdenticalSystemReturnsTheEarlierSolution)
       const HelmholtzSolution again = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
                                                    network.mass_diagonal(), 1.3, source.dofs, source.values);
       ASSERT_TRUE(again.ok()) << again.message;
-      EXPECT_EQ(solver.num_factorisations(), 1);
-      EXPECT_EQ(solver.num_reuses(), 1);
-      EXPECT_EQ(again.q, first.q);
-      EXPECT_EQ(again.relative_residual, first.relative_residual);
-      EXPECT_NE(again.factorisation.find("unchanged system"), std::string::npos) << again.factorisation;
+      EXPECT_EQ(solver.num_factorisations(), reuse ? 1 : 2);
+      EXPECT_EQ(solver.num_reuses(), reuse ? 1 : 0);
+      EXPECT_LT((again.q - first.q).norm(), 1e-12 * first.q.norm());
+      EXPECT_EQ(again.factorisation.find("earlier solution") != std::string::npos, reuse) << again.factorisation;
 
-      // the same up to round-off: with reuse, the earlier factors answer it
+      // the same up to round-off
       std::vector<Contact> contacts = network.contacts();
       contacts[4].kn *= 1.0 + 1e-13;
       const ContactNetwork nudged(2, ContactModel::Normal, network.grains(), contacts);
       const HelmholtzSolution close = solver.solve(nudged.stiffness_matrix(), nudged.damping_matrix(),
                                                    nudged.mass_diagonal(), 1.3, source.dofs, source.values);
       ASSERT_TRUE(close.ok()) << close.message;
-      EXPECT_EQ(solver.num_factorisations(), reuse ? 1 : 2);
+      EXPECT_EQ(solver.num_factorisations(), reuse ? 1 : 3);
       EXPECT_LT((close.q - first.q).norm(), 1e-9 * first.q.norm());
 
-      // another amplitude of the source (b changes): solved anew
+      // another amplitude of the source (b changes): not the last solution
       Source louder = source;
       louder.values *= 2.0;
       const HelmholtzSolution twice = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
                                                    network.mass_diagonal(), 1.3, louder.dofs, louder.values);
       ASSERT_TRUE(twice.ok()) << twice.message;
-      EXPECT_EQ(twice.factorisation.find("unchanged system"), std::string::npos);
+      EXPECT_EQ(twice.factorisation.find("earlier solution"), std::string::npos);
       EXPECT_LT((twice.q - 2.0 * first.q).norm(), 1e-10 * first.q.norm());
-      // another frequency (A changes): solved anew
+      // another frequency (A changes): not the last solution either
       const HelmholtzSolution other = solver.solve(network.stiffness_matrix(), network.damping_matrix(),
                                                    network.mass_diagonal(), 1.31, source.dofs, source.values);
       ASSERT_TRUE(other.ok()) << other.message;
-      EXPECT_EQ(other.factorisation.find("unchanged system"), std::string::npos);
+      EXPECT_EQ(other.factorisation.find("earlier solution"), std::string::npos);
       EXPECT_GT((other.q - first.q).norm(), 1e-6 * first.q.norm());
     }
   }

@@ -93,8 +93,8 @@ TEST(MumpsLdlt, RealIndefiniteMatchesDenseSolve)
   const Eigen::MatrixXd x = ldlt.solve(b);
   const Eigen::MatrixXd expected = dense.partialPivLu().solve(b);
   EXPECT_LT((x - expected).norm(), 1e-10 * expected.norm());
-  EXPECT_GT(ldlt.factor_entries(), a.nonZeros() / 2);
-  EXPECT_GE(ldlt.workspace_relaxation(), 0);
+  // fill-in: the factor holds more than the lower triangle of A
+  EXPECT_GT(ldlt.factor_entries(), (a.nonZeros() + a.rows()) / 2);
 
   // new values on the same pattern: numeric factorisation only
   const Eigen::SparseMatrix<double> a2 = helmholtz_matrix<double>(12, 8, 0.7, 0.0);

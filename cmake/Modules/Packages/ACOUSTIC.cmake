@@ -43,7 +43,8 @@ foreach(_lib dmumps zmumps mumps_common)
   endif()
 endforeach()
 if(TARGET lammps)
-  # inside LAMMPS: its MPI (MUMPS cannot run on the MPI stubs of a serial build)
+  # inside LAMMPS: link LAMMPS's own MPI; MUMPS needs a real MPI library, so a
+  # serial LAMMPS build (BUILD_MPI off) is refused
   if(NOT BUILD_MPI)
     message(FATAL_ERROR "ACOUSTIC package: needs BUILD_MPI=on (MUMPS factorises with MPI)")
   endif()
