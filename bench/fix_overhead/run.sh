@@ -38,5 +38,5 @@ run_case 2d_8000 in.layer2d -var nx 200 -var rows 40
 run_case 2d_32000 in.layer2d -var nx 400 -var rows 80
 [ "${ACOUSTIC_BENCH_3D:-1}" = 1 ] && run_case 3d_32000 in.layer3d -var nx 20 -var nz 20
 echo "times in seconds: the split is that of the last update; fact/all = factorisations / solves"
-echo "(the others reuse the last factors as BiCGSTAB preconditioner); setup_s = the update at setup;"
+echo "(the others reuse the last solution, or its factors in BiCGSTAB); setup_s = the update at setup;"
 echo "fix_s = the updates during the run; loop_s = LAMMPS loop time; overhead = fix_s / loop_s"
