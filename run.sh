@@ -6,10 +6,12 @@
 #   ./run.sh build    only install and build
 #
 # On a fresh Debian 12 machine run it as root: it installs the Debian packages
-# it needs and fetches Debian's LAMMPS source with `apt-get source lammps`.
+# it needs and fetches the source of LAMMPS 4 Feb 2025 (Debian 13's lammps
+# package) through apt, from a deb-src entry for trixie it adds in a file of
+# its own, derived from the machine's Debian entry.
 # Environment:
 #   ACOUSTIC_CACHE       where the LAMMPS source is kept (default /var/cache/acoustic)
-#   LAMMPS_SOURCE_DIR    use this LAMMPS source tree instead of Debian's
+#   LAMMPS_SOURCE_DIR    use this LAMMPS source tree (4 Feb 2025 or later) instead
 #   ACOUSTIC_BUILD_DIR   build directory (default ./build, ignored by git)
 #   ACOUSTIC_JOBS        parallel build jobs (default: number of cores)
 set -euo pipefail
@@ -23,8 +25,8 @@ debian_packages=(
   build-essential cmake dpkg-dev
   openmpi-bin libopenmpi-dev
   libeigen3-dev libsuitesparse-dev libmumps-dev libspectra-dev liblapack-dev libblas-dev libopenblas0-serial
-  libgtest-dev
-  python3-lammps python3-numpy python3-matplotlib python3-pytest
+  libgtest-dev patch
+  python3-numpy python3-scipy python3-matplotlib python3-pytest
 )
 
 say() { printf '[acoustic] %s\n' "$*"; }
@@ -58,22 +60,80 @@ install_packages() {
   fi
 }
 
-# add deb-src next to every deb entry of the apt sources (deb822 or one-line format)
-enable_deb_src() {
-  local changed=0 f
+# LAMMPS "4 Feb 2025": the upstream source of Debian 13 (trixie)'s lammps package
+lammps_upstream=20250204+dfsg.1
+lammps_dirname=lammps-4Feb2025
+lammps_sources_file=/etc/apt/sources.list.d/acoustic-lammps-source.sources
+
+# the URI and keyring of the machine's Debian archive entry (the one serving
+# the main suite of this release), from deb822 or one-line apt sources
+debian_archive_entry() {
+  local codename f
+  codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
+  [ -n "$codename" ] || die "cannot tell the Debian release from /etc/os-release"
   for f in /etc/apt/sources.list.d/*.sources; do
+    [ -f "$f" ] && [ "$f" != "$lammps_sources_file" ] || continue
+    awk -v suite="$codename" '
+      /^[[:space:]]*$/ { if (uri != "" && hit) { print uri, key; exit } uri = ""; key = ""; hit = 0; next }
+      /^URIs:/ { uri = $2 }
+      /^Signed-By:/ { key = $2 }
+      /^Suites:/ { for (k = 2; k <= NF; k++) if ($k == suite) hit = 1 }
+      END { if (uri != "" && hit) print uri, key }' "$f"
+  done | head -n 1 | grep . && return
+  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
     [ -f "$f" ] || continue
-    if grep -qE '^Types:[[:space:]]*deb[[:space:]]*$' "$f"; then
-      as_root sed -i -E 's/^Types:[[:space:]]*deb[[:space:]]*$/Types: deb deb-src/' "$f"
-      changed=1
-    fi
-  done
-  f=/etc/apt/sources.list
-  if [ -f "$f" ] && grep -qE '^deb ' "$f" && ! grep -qE '^deb-src ' "$f"; then
-    as_root sed -i -E 'p; s/^deb /deb-src /' "$f"
-    changed=1
+    sed -nE "s/^deb[[:space:]]+(\[[^]]*signed-by=([^] ]+)[^]]*\][[:space:]]+)?([^[:space:]]+)[[:space:]]+$codename[[:space:]].*/\3 \2/p" "$f"
+  done | head -n 1 | grep . && return
+  die "found no Debian archive entry for suite $codename in the apt sources"
+}
+
+# a deb-src entry for trixie in a file of its own, next to the machine's entries
+add_trixie_sources() {
+  [ -f "$lammps_sources_file" ] && return
+  local uri key
+  read -r uri key < <(debian_archive_entry)
+  say "adding a deb-src entry for trixie ($uri) in $lammps_sources_file"
+  {
+    echo "# added by ACOUSTIC's run.sh: the source of LAMMPS 4 Feb 2025 (Debian 13)"
+    echo "Types: deb-src"
+    echo "URIs: $uri"
+    echo "Suites: trixie"
+    echo "Components: main"
+    if [ -n "$key" ]; then echo "Signed-By: $key"; fi
+  } | as_root tee "$lammps_sources_file" >/dev/null
+  apt_updated=0
+}
+
+# fetch lammps_$lammps_upstream.orig.tar.xz through apt, check it against the
+# SHA256 of apt's Sources index, unpack it into the cache
+fetch_lammps_source() {
+  add_trixie_sources
+  apt_update
+  local version tarball sha
+  version=$(apt-cache showsrc lammps | awk -v up="$lammps_upstream" \
+    '/^Version:/ && index($2, up "-") == 1 { print $2; exit }')
+  [ -n "$version" ] || die "apt knows no lammps source package $lammps_upstream-*; check $lammps_sources_file"
+  tarball=lammps_$lammps_upstream.orig.tar.xz
+  as_root mkdir -p "$cache"
+  if [ ! -f "$cache/$tarball" ]; then
+    say "fetching Debian's lammps $version source into $cache"
+    # the .dsc of this version may be missing from the archive: apt then
+    # fails after the tarballs arrived, which the checksum below settles
+    (cd "$cache" && as_root apt-get source --download-only -qq "lammps=$version" >/dev/null 2>&1) || true
   fi
-  if [ "$changed" -eq 1 ]; then apt_updated=0; fi
+  [ -f "$cache/$tarball" ] || die "apt-get source lammps=$version did not deliver $tarball"
+  sha=$(apt-cache showsrc lammps | awk -v v="$version" -v f="$tarball" '
+    /^Version:/ { cur = $2 } /^Checksums-Sha256:/ { on = 1; next } /^[A-Za-z-]+:/ { on = 0 }
+    on && cur == v && $3 == f { print $1; exit }')
+  [ -n "$sha" ] || die "apt's Sources index lists no SHA256 for $tarball"
+  echo "$sha  $cache/$tarball" | sha256sum -c --quiet - \
+    || die "$cache/$tarball does not match the SHA256 of apt's Sources index; delete it and rerun"
+  say "unpacking $tarball (SHA256 checked)"
+  as_root rm -rf "$cache/$lammps_dirname.tmp"
+  as_root mkdir -p "$cache/$lammps_dirname.tmp"
+  as_root tar -xJf "$cache/$tarball" --no-same-owner -C "$cache/$lammps_dirname.tmp"
+  as_root mv "$cache/$lammps_dirname.tmp/$lammps_dirname" "$cache/$lammps_dirname"
+  as_root rm -rf "$cache/$lammps_dirname.tmp"
 }
 
 lammps_source() {
@@ -82,18 +142,10 @@ lammps_source() {
       || die "LAMMPS_SOURCE_DIR=$LAMMPS_SOURCE_DIR has no cmake/CMakeLists.txt"
     return
   fi
-  local dir
-  dir=$(ls -d "$cache"/lammps-*/ 2>/dev/null | head -n 1 || true)
-  if [ -z "$dir" ] || [ ! -f "$dir/cmake/CMakeLists.txt" ]; then
-    say "fetching Debian's LAMMPS source into $cache"
-    enable_deb_src
-    apt_update
-    as_root mkdir -p "$cache"
-    (cd "$cache" && as_root apt-get source -qq lammps >/dev/null 2>&1) \
-      || die "apt-get source lammps failed in $cache"
-    dir=$(ls -d "$cache"/lammps-*/ | head -n 1)
+  if [ ! -f "$cache/$lammps_dirname/cmake/CMakeLists.txt" ]; then
+    fetch_lammps_source
   fi
-  LAMMPS_SOURCE_DIR=${dir%/}
+  LAMMPS_SOURCE_DIR=$cache/$lammps_dirname
 }
 
 configure_and_build() {

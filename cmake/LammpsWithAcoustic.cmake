@@ -1,14 +1,15 @@
 # Build LAMMPS from LAMMPS_SOURCE_DIR with MPI, GRANULAR and ACOUSTIC, as an
 # external project of this build.  The LAMMPS tree is not modified: a thin
 # overlay tree in the build directory links to it, holds a patched copy of its
-# cmake/ directory, and links src/ACOUSTIC to this repository's package.
+# cmake/ directory and of the files that cmake/patches/*.patch change, and
+# links src/ACOUSTIC to this repository's package.
 include(ExternalProject)
 include(${CMAKE_CURRENT_LIST_DIR}/AcousticPatchLammps.cmake)
 
-if(NOT EXISTS ${LAMMPS_SOURCE_DIR}/cmake/CMakeLists.txt OR NOT EXISTS ${LAMMPS_SOURCE_DIR}/src/GRANULAR)
-  message(FATAL_ERROR "LAMMPS_SOURCE_DIR='${LAMMPS_SOURCE_DIR}' is not a LAMMPS source tree "
-    "(expected cmake/CMakeLists.txt and src/GRANULAR). Run ./run.sh, which fetches Debian's "
-    "LAMMPS source, or pass -D LAMMPS_SOURCE_DIR=/path/to/lammps.")
+if(NOT EXISTS ${LAMMPS_SOURCE_DIR}/cmake/CMakeLists.txt OR NOT EXISTS ${LAMMPS_SOURCE_DIR}/src/GRANULAR/gran_sub_mod.h)
+  message(FATAL_ERROR "LAMMPS_SOURCE_DIR='${LAMMPS_SOURCE_DIR}' is not a LAMMPS source tree of "
+    "4 Feb 2025 or later (expected cmake/CMakeLists.txt and src/GRANULAR/gran_sub_mod.h). Run "
+    "./run.sh, which fetches Debian's LAMMPS source, or pass -D LAMMPS_SOURCE_DIR=/path/to/lammps.")
 endif()
 
 set(ACOUSTIC_LAMMPS_TREE ${CMAKE_BINARY_DIR}/lammps-tree)
@@ -38,6 +39,10 @@ endif()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/Modules/Packages/ACOUSTIC.cmake
                ${ACOUSTIC_LAMMPS_TREE}/cmake/Modules/Packages/ACOUSTIC.cmake COPYONLY)
 acoustic_patch_lammps_cmake(${ACOUSTIC_LAMMPS_TREE}/cmake)
+file(GLOB _patches ${PROJECT_SOURCE_DIR}/cmake/patches/*.patch)
+foreach(_patch ${_patches})
+  acoustic_apply_lammps_patch(${_patch} ${ACOUSTIC_LAMMPS_TREE} ${LAMMPS_SOURCE_DIR})
+endforeach()
 
 # a new or removed file in src/ACOUSTIC changes the style headers: reconfigure LAMMPS
 file(GLOB _pkg_files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ACOUSTIC/*.cpp
@@ -50,7 +55,6 @@ ExternalProject_Add(lammps
   CMAKE_ARGS --no-warn-unused-cli -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE}
              -DBUILD_MPI=on -DBUILD_SHARED_LIBS=on -DBUILD_OMP=off
              -DPKG_GRANULAR=on -DPKG_ACOUSTIC=on
-             -DLAMMPS_EXCEPTIONS=on
              -DACOUSTIC_PACKAGE_FILES=${_pkg_files_hash}
   INSTALL_COMMAND ""
   BUILD_ALWAYS TRUE
@@ -58,3 +62,4 @@ ExternalProject_Add(lammps
 
 set(ACOUSTIC_LMP ${ACOUSTIC_LAMMPS_BUILD}/lmp)
 set(ACOUSTIC_LIBLAMMPS_DIR ${ACOUSTIC_LAMMPS_BUILD})
+set(ACOUSTIC_LAMMPS_PYTHON ${ACOUSTIC_LAMMPS_TREE}/python)

@@ -15,7 +15,7 @@
    Contributing authors: the ACOUSTIC package developers.
 
    Vibration modes K v = omega^2 M v of the contact network of pair
-   granular/acoustic (the network fix acoustic/mindlin drives), with the
+   granular (the network fix acoustic/mindlin drives), with the
    atoms of a fixed group clamped: the network is gathered to rank 0 by
    VibrationNetwork, solved there by the ACOUSTIC numerics (dense, Lanczos
    or KPM), and the results are broadcast or scattered back.

@@ -32,7 +32,7 @@
 #include "error.h"
 #include "group.h"
 #include "memory.h"
-#include "pair_granular_acoustic.h"
+#include "granular_contact_walker.h"
 #include "update.h"
 
 #include <cmath>
@@ -322,7 +322,7 @@ void FixAcousticMindlin::update_factors()
   const double t1 = MPI_Wtime();
   if (frequency > 0.0) {
     network->scatter(solution, q_atom, groupbit);
-    comm->forward_comm_fix(this);
+    comm->forward_comm(this);
   } else {
     for (int i = 0; i < nlocal; i++)
       for (int k = 0; k < 2 * ndof; k++) q_atom[i][k] = 0.0;
@@ -345,7 +345,6 @@ void FixAcousticMindlin::update_factors()
 
   // friction factor of each contact from the vibration of its contact point
   const auto &contacts = network->local_contacts();
-  PairGranularAcoustic *pair = network->pair();
   tagint *tag = atom->tag;
   if (static_cast<int>(contacts.size()) > maxcontact_rows) {
     maxcontact_rows = static_cast<int>(contacts.size());
@@ -371,10 +370,10 @@ void FixAcousticMindlin::update_factors()
       const Eigen::Vector3cd delta = Acoustic::contact_point_displacement(
           dim, settings.model, n, flip ? c.radj : c.radi, flip ? c.radi : c.radj, qi, qj);
       ut = Acoustic::tangential_amplitude(delta, n, amplitude);
-      s = Acoustic::friction_factor(law, c.kt, ut, c.mu, c.fn);
+      s = Acoustic::friction_factor(law, c.kt, ut, c.mu, c.fncrit);
     }
-    pair->set_friction_factor(c.history, s);
-    if (!c.counted) continue;
+    GranularContactWalker::set_friction_factor(c.factor, s);
+    if (!c.owned) continue;
     double *row = contact_array[ncontact_rows++];
     row[0] = static_cast<double>(tag[c.i]);
     row[1] = static_cast<double>(tag[c.j]);

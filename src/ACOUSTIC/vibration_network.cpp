@@ -25,7 +25,6 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
-#include "pair_granular_acoustic.h"
 
 #include <algorithm>
 #include <cstring>
@@ -108,7 +107,7 @@ int VibrationNetworkSettings::parse(int iarg, int narg, char **arg, const std::s
 
 VibrationNetwork::VibrationNetwork(LAMMPS *lmp, const VibrationNetworkSettings &s,
                                    const std::string &cmd) :
-    Pointers(lmp), settings(s), command(cmd), pair_(nullptr), ncontacts_all(0), ngrains_all(0)
+    Pointers(lmp), settings(s), command(cmd), walker(lmp, cmd), ncontacts_all(0), ngrains_all(0)
 {
 }
 
@@ -118,12 +117,7 @@ VibrationNetwork::~VibrationNetwork() = default;
 
 void VibrationNetwork::init()
 {
-  pair_ = dynamic_cast<PairGranularAcoustic *>(force->pair);
-  if (pair_ == nullptr)
-    error->all(FLERR, "{} requires pair_style granular/acoustic (its contacts and friction "
-                      "factors); replace pair_style granular by granular/acoustic", command);
-  if (!atom->radius_flag || !atom->rmass_flag)
-    error->all(FLERR, "{} requires atom attributes radius and rmass (use atom_style sphere)", command);
+  walker.init();
 }
 
 int VibrationNetwork::dofs_per_grain() const
@@ -135,66 +129,53 @@ int VibrationNetwork::dofs_per_grain() const
    walk the contacts, gather grains and contacts to rank 0, build the network
 ------------------------------------------------------------------------- */
 
+void VibrationNetwork::apply_settings(GranularContact &c) const
+{
+  const double default_ratio =
+      (settings.stiffness == VibrationNetworkSettings::HERTZ) ? 2.0 / 7.0 : -1.0;
+  const double ratio = (settings.ratio >= 0.0) ? settings.ratio : default_ratio;
+  if (settings.stiffness == VibrationNetworkSettings::HERTZ) {
+    const double kappa = settings.kappa_scale *
+        Acoustic::hertz_kappa(settings.youngs_modulus, settings.poisson_ratio, c.radi, c.radj);
+    c.kn = Acoustic::hertz_normal_stiffness(kappa, c.fn);
+  }
+  if (ratio >= 0.0) c.kt = ratio * c.kn;
+}
+
 void VibrationNetwork::build(int groupbit, int marker_groupbit)
 {
-  if (!pair_) init();
-  std::vector<PairGranularAcoustic::ContactState> states;
-  pair_->current_contacts(states, groupbit);
+  walker.collect(contacts, groupbit);
 
   tagint *tag = atom->tag;
   double *rmass = atom->rmass;
   double *radius = atom->radius;
   int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const bool newton = force->newton_pair;
-  const double default_ratio = (settings.stiffness == VibrationNetworkSettings::HERTZ) ? 2.0 / 7.0 : -1.0;
-  const double ratio = (settings.ratio >= 0.0) ? settings.ratio : default_ratio;
 
-  // local contacts with the stiffnesses of the network
-  contacts.clear();
-  contacts.reserve(states.size());
+  // contacts with the stiffnesses of the network
   std::vector<double> csend;
-  csend.reserve(states.size() * CONTACT_WORDS);
-  for (const auto &s : states) {
-    LocalContact c;
-    c.i = s.i;
-    c.j = s.j;
-    for (int k = 0; k < 3; k++) c.n[k] = s.n[k];
-    c.radi = s.radi;
-    c.radj = s.radj;
-    c.fn = s.fn;
-    c.mu = s.mu;
-    c.history = s.history;
-    // with newton off a contact across sub-domains is listed on both processors
-    c.counted = newton || s.j < nlocal || tag[s.i] < tag[s.j];
+  csend.reserve(contacts.size() * CONTACT_WORDS);
+  for (auto &c : contacts) {
     try {
-      if (settings.stiffness == VibrationNetworkSettings::HERTZ) {
-        const double kappa = settings.kappa_scale *
-            Acoustic::hertz_kappa(settings.youngs_modulus, settings.poisson_ratio, s.radi, s.radj);
-        c.kn = Acoustic::hertz_normal_stiffness(kappa, s.fn);
-      } else {
-        c.kn = s.kn;
-      }
-      c.kt = (ratio >= 0.0) ? ratio * c.kn : s.kt;
+      apply_settings(c);
     } catch (Acoustic::SolverError &e) {
-      error->one(FLERR, "{}: contact of atoms {} and {}: {}", command, tag[s.i], tag[s.j], e.what());
+      error->one(FLERR, "{}: contact of atoms {} and {}: {}", command, tag[c.i], tag[c.j], e.what());
     }
-    contacts.push_back(c);
 
     // open or tensile contacts carry no stiffness and stay out of the network
-    if (!c.counted || !(c.kn > 0.0)) continue;
+    if (!c.owned || !(c.kn > 0.0)) continue;
     double cn = 0.0, ct = 0.0;
     if (settings.damping_ratio > 0.0) {
-      cn = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kn, rmass[s.i], rmass[s.j]);
-      ct = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kt, rmass[s.i], rmass[s.j]);
+      cn = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kn, rmass[c.i], rmass[c.j]);
+      ct = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kt, rmass[c.i], rmass[c.j]);
     }
     // orient every contact from the lower to the higher atom ID: the network
     // is then the same whatever the number of processors
-    const bool flip = tag[s.i] > tag[s.j];
+    const bool flip = tag[c.i] > tag[c.j];
     const double sign = flip ? -1.0 : 1.0;
-    csend.push_back(static_cast<double>(flip ? tag[s.j] : tag[s.i]));
-    csend.push_back(static_cast<double>(flip ? tag[s.i] : tag[s.j]));
-    for (int k = 0; k < 3; k++) csend.push_back(sign * s.n[k]);
+    csend.push_back(static_cast<double>(flip ? tag[c.j] : tag[c.i]));
+    csend.push_back(static_cast<double>(flip ? tag[c.i] : tag[c.j]));
+    for (int k = 0; k < 3; k++) csend.push_back(sign * c.n[k]);
     csend.push_back(c.kn);
     csend.push_back(c.kt);
     csend.push_back(cn);

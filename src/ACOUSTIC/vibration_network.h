@@ -13,8 +13,8 @@
 
 /* ----------------------------------------------------------------------
    The contact network of the current packing, as fix acoustic/mindlin and
-   compute vibration/modes see it: the contacts of pair granular/acoustic
-   between atoms of a group, with stiffnesses (and dashpots) from the
+   compute vibration/modes see it: the contacts of pair granular (read by
+   GranularContactWalker) between atoms of a group, with stiffnesses (and dashpots) from the
    settings shared by both commands, gathered to rank 0 as an
    Acoustic::ContactNetwork keyed by atom IDs; and per-grain values sent
    back from rank 0 to the atoms' owners.
@@ -26,13 +26,12 @@
 #include "pointers.h"
 
 #include "acoustic_contact_network.h"
+#include "granular_contact_walker.h"
 
 #include <memory>
 #include <vector>
 
 namespace LAMMPS_NS {
-
-class PairGranularAcoustic;
 
 // keywords shared by fix acoustic/mindlin and compute vibration/modes
 struct VibrationNetworkSettings {
@@ -52,17 +51,6 @@ struct VibrationNetworkSettings {
 
 class VibrationNetwork : protected Pointers {
  public:
-  // a contact listed on this processor (both atoms in the group)
-  struct LocalContact {
-    int i, j;          // local indices, i owned
-    double n[3];       // unit normal (x_i - x_j)/|x_i - x_j|
-    double radi, radj;
-    double fn, mu;     // elastic normal force, friction coefficient
-    double kn, kt;     // stiffnesses of the network (from the settings)
-    double *history;   // the contact's history (for the friction factor)
-    bool counted;      // false for the second copy of a contact (newton off)
-  };
-
   VibrationNetwork(class LAMMPS *, const VibrationNetworkSettings &, const std::string &command);
   ~VibrationNetwork() override;
 
@@ -74,7 +62,9 @@ class VibrationNetwork : protected Pointers {
   // marked_grains() returns on rank 0 (the source, or fixed atoms)
   void build(int groupbit, int marker_groupbit);
 
-  const std::vector<LocalContact> &local_contacts() const { return contacts; }
+  // the contacts listed on this processor (both atoms in the group), with
+  // kn and kt replaced by the stiffnesses of the network (from the settings)
+  const std::vector<GranularContact> &local_contacts() const { return contacts; }
   bigint ncontacts_total() const { return ncontacts_all; }
   bigint ngrains_total() const { return ngrains_all; }
 
@@ -88,15 +78,14 @@ class VibrationNetwork : protected Pointers {
   // (re, im) pairs, 2 dofs_per_grain() numbers; atoms outside the group get zeros
   void scatter(const Eigen::VectorXcd &values, double **out, int groupbit);
 
-  PairGranularAcoustic *pair() const { return pair_; }
   int dofs_per_grain() const;
 
  private:
   VibrationNetworkSettings settings;
   std::string command;
-  PairGranularAcoustic *pair_;
+  GranularContactWalker walker;
 
-  std::vector<LocalContact> contacts;
+  std::vector<GranularContact> contacts;
   bigint ncontacts_all, ngrains_all;
 
   // rank 0: the network, tags of its grains (sorted), marked grains, and the
@@ -106,6 +95,8 @@ class VibrationNetwork : protected Pointers {
   std::vector<int> marked;
   std::vector<int> sent_counts;
   std::vector<int> sent_grain_index;
+
+  void apply_settings(GranularContact &c) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -2,7 +2,7 @@
 
 #include "atom.h"
 #include "force.h"
-#include "pair_granular_acoustic.h"
+#include "granular_contact_walker.h"
 #include "input.h"
 #include "library.h"
 
@@ -68,20 +68,25 @@ std::vector<double> allgather(LammpsInstance &L, const std::vector<double> &mine
   return all;
 }
 
+std::vector<LAMMPS_NS::GranularContact> granular_contacts(LammpsInstance &L)
+{
+  LAMMPS_NS::GranularContactWalker walker(L.lmp, "test");
+  walker.init();
+  std::vector<LAMMPS_NS::GranularContact> contacts;
+  walker.collect(contacts, 1);    // group all
+  return contacts;
+}
+
 std::map<ContactKey, double> friction_factors(LammpsInstance &L)
 {
-  auto *pair = dynamic_cast<LAMMPS_NS::PairGranularAcoustic *>(L.lmp->force->pair);
-  EXPECT_NE(pair, nullptr) << "pair style is not granular/acoustic";
   std::map<ContactKey, double> result;
-  if (!pair) return result;
-  std::vector<LAMMPS_NS::PairGranularAcoustic::ContactState> contacts;
-  pair->current_contacts(contacts, 1);
+  const std::vector<LAMMPS_NS::GranularContact> contacts = granular_contacts(L);
   const auto *tag = L.lmp->atom->tag;
   std::vector<double> mine;
   for (const auto &c : contacts) {
     mine.push_back(static_cast<double>(std::min(tag[c.i], tag[c.j])));
     mine.push_back(static_cast<double>(std::max(tag[c.i], tag[c.j])));
-    mine.push_back(pair->friction_factor(c.history));
+    mine.push_back(LAMMPS_NS::GranularContactWalker::friction_factor(c.factor));
   }
   const std::vector<double> all = allgather(L, mine);
   for (std::size_t k = 0; k < all.size(); k += 3) {

@@ -3,6 +3,7 @@
 #ifndef ACOUSTIC_TEST_LAMMPS_FIXTURE_H
 #define ACOUSTIC_TEST_LAMMPS_FIXTURE_H
 
+#include "granular_contact_walker.h"
 #include "lammps.h"
 
 #include <mpi.h>
@@ -35,7 +36,10 @@ class LammpsInstance {
 // on every rank (rank order)
 std::vector<double> allgather(LammpsInstance &L, const std::vector<double> &mine);
 
-// friction factor of every contact of pair granular/acoustic in the whole
+// the contacts of pair granular on this rank, as the package's walker reads them
+std::vector<LAMMPS_NS::GranularContact> granular_contacts(LammpsInstance &L);
+
+// friction factor of every contact of pair granular in the whole
 // system, keyed by (lower atom ID, higher atom ID), on every rank of the
 // instance; with newton off the two copies of a contact must agree (checked)
 typedef std::pair<long, long> ContactKey;

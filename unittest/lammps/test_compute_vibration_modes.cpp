@@ -144,9 +144,9 @@ std::string chain_deck()
     d += "create_atoms 1 single " + HexLayer::num(0.99 * i) + " 0 0\n";
   d += "set group all diameter 1.0\nset group all mass " + HexLayer::num(kChainMass) + "\n"
        "group wall id 1 " + std::to_string(kChainGrains + 2) + "\n"
-       "pair_style granular/acoustic\n"
+       "pair_style granular\n"
        "pair_coeff * * hooke " + HexLayer::num(kChainStiffness) +
-       " 0.0 tangential linear_history 800 0.5 0.5\n";
+       " 0.0 tangential linear_history/acoustic 800 0.5 0.5\n";
   return d;
 }
 
@@ -237,8 +237,8 @@ TEST_P(TriangularLattice, SoundSpeedMatchesPaper003)
   LammpsInstance L;
   L.commands(layer.commands("si"));
   L.commands("set group all diameter " + HexLayer::num(d) + "\nset group all mass " +
-             HexLayer::num(mass) + "\nneighbor 1e-4 bin\npair_style granular/acoustic\n"
-             "pair_coeff * * hertz/material 7e10 0.0 0.2 tangential mindlin NULL 1.0 0.5\n");
+             HexLayer::num(mass) + "\nneighbor 1e-4 bin\npair_style granular\n"
+             "pair_coeff * * hertz/material 7e10 0.0 0.2 tangential mindlin/acoustic NULL 1.0 0.5\n");
   std::string keywords = tc.keywords;
   if (tc.frictional) keywords += " ratio " + HexLayer::num(eta);
   L.command("compute modes all vibration/modes fixed wall " + keywords);
@@ -327,8 +327,8 @@ Packing disordered_packing(int nx, int nrows, unsigned seed)
       "variable d atom 0.99+0.02*(v_h-floor(v_h))\n"
       "set group all diameter v_d\nset group all density 1.0\n"
       "group rattlers id" + ids + "\nset group rattlers diameter 0.8\n"
-      "pair_style granular/acoustic\n"
-      "pair_coeff * * hertz/material 1e5 0.0 0.3 tangential mindlin NULL 1.0 0.5\n";
+      "pair_style granular\n"
+      "pair_coeff * * hertz/material 1e5 0.0 0.3 tangential mindlin/acoustic NULL 1.0 0.5\n";
   return p;
 }
 
@@ -490,8 +490,8 @@ std::string flowing_layer()
          "set group all density 1.0\nregion base block INF INF INF 0.9 INF INF\n"
          "group base region base\ngroup grains subtract all base\n"
          "velocity grains create 0.5 87287 loop geom\n"
-         "pair_style granular/acoustic\n"
-         "pair_coeff * * hertz/material 1e5 0.5 0.3 tangential mindlin NULL 1.0 0.5\n"
+         "pair_style granular\n"
+         "pair_coeff * * hertz/material 1e5 0.5 0.3 tangential mindlin/acoustic NULL 1.0 0.5\n"
          "fix nve grains nve/sphere\nfix grav grains gravity 10 vector 0.2 -1.0 0.0\n"
          "fix 2d all enforce2d\ntimestep 1e-3\nneighbor 0.3 bin\n"
          "neigh_modify delay 0 every 1 check yes\n";
@@ -596,7 +596,7 @@ const BadInput kBadInputs[] = {
     {"pair_granular", "pair_style granular\npair_coeff * * hooke 1000 0.0 tangential "
      "linear_history 800 0.5 0.5",
      "compute m all vibration/modes\nthermo_style custom step c_m\nrun 0",
-     "requires pair_style granular/acoustic"},
+     "use tangential linear_history/acoustic in pair_coeff"},
     {"fixed_outside_group", "", "group inner id 2:21\n"
      "compute m inner vibration/modes fixed wall\nthermo_style custom step c_m\nrun 0",
      "fixed group wall has no atom in the compute group inner"},
@@ -617,8 +617,8 @@ TEST(DenseLimit, TooManyDofsForDense)
              "boundary f f p\nregion box block -1 101 -1 102 -0.5 0.5\ncreate_box 1 box\n"
              "lattice sq 1.0\nregion fill block 0 100 0 100.5 -0.5 0.5\n"
              "create_atoms 1 region fill\nset group all diameter 1.02\nset group all density 1.0\n"
-             "pair_style granular/acoustic\n"
-             "pair_coeff * * hooke 1000 0.0 tangential linear_history 800 0.5 0.5\n"
+             "pair_style granular\n"
+             "pair_coeff * * hooke 1000 0.0 tangential linear_history/acoustic 800 0.5 0.5\n"
              "compute m all vibration/modes\nthermo_style custom step c_m\n");
   ASSERT_GT(L.natoms(), 10000);
   try {

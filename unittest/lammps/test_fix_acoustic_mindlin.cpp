@@ -56,7 +56,7 @@ std::string crystal_deck(const std::string &tangential)
          "create_atoms 2 region base\ncreate_atoms 1 region layer\n"
          "group base type 2\ngroup grains type 1\n"
          "set group all diameter 1.002\nset group all density 1.0\n"
-         "pair_style granular/acoustic\n"
+         "pair_style granular\n"
          "pair_coeff * * hooke 1e4 150 damping mass_velocity tangential " + tangential + "\n"
          "fix integrate grains nve/sphere\nfix plane all enforce2d\n"
          "fix grav grains gravity 1.0 vector 0 -1 0\n"
@@ -196,8 +196,8 @@ TEST_P(LinearResponse, MatchesDrivenDemByLockIn)
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, LinearResponse,
-                         ::testing::Values(ResponseCase{"normal", "linear_nohistory 0.0 0.5"},
-                                           ResponseCase{"full", "linear_history 8e3 1.0 10.0"}),
+                         ::testing::Values(ResponseCase{"normal", "linear_nohistory/acoustic 0.0 0.5"},
+                                           ResponseCase{"full", "linear_history/acoustic 8e3 1.0 10.0"}),
                          [](const ::testing::TestParamInfo<ResponseCase> &info) {
                            return std::string(info.param.model);
                          });
@@ -217,8 +217,8 @@ std::string layer_deck(const std::string &newton = "on")
          "create_atoms 2 region base\ncreate_atoms 1 region layer\n"
          "group base type 2\ngroup grains type 1\n"
          "set group all diameter 1.002\nset group all density 1.0\n"
-         "pair_style granular/acoustic\n"
-         "pair_coeff * * hertz/material 1e5 0.5 0.3 tangential mindlin NULL 1.0 0.5\n"
+         "pair_style granular\n"
+         "pair_coeff * * hertz/material 1e5 0.5 0.3 tangential mindlin/acoustic NULL 1.0 0.5\n"
          "fix integrate grains nve/sphere\nfix plane all enforce2d\n"
          "fix grav grains gravity 1.0 vector 0 -1 0\n"
          "timestep 1e-3\nneighbor 0.2 bin\nneigh_modify delay 0 every 1 check yes\nthermo 0\n"
@@ -443,8 +443,8 @@ TEST(FixSolverFailure, ResonanceWarnsAndKeepsFactors)
              "region box block -3 3 -3 3 -0.5 0.5\ncreate_box 2 box\n"
              "create_atoms 2 single 0 0 0\ncreate_atoms 1 single 0 0.99 0\n"
              "set group all diameter 1.0\nset group all mass 1.0\n"
-             "group base type 2\npair_style granular/acoustic\n");
-  L.command("pair_coeff * * hooke " + fmt_double(k) + " 0 tangential linear_history " +
+             "group base type 2\npair_style granular\n");
+  L.command("pair_coeff * * hooke " + fmt_double(k) + " 0 tangential linear_history/acoustic " +
             fmt_double(k) + " 0 0.5");
   L.commands("fix plane all enforce2d\nthermo 0\n"
              "fix ac all acoustic/mindlin 10 frequency 3.0 amplitude 1e-3 source base direction 1 1 0\n"
@@ -493,8 +493,8 @@ TEST_P(FixErrors, ClearError)
              "region box block 0 4 0 4 0 4\ncreate_box 2 box\n"
              "create_atoms 2 single 1 1 1\ncreate_atoms 1 single 1 1 1.9\n"
              "group base type 2\ngroup empty type 3\ngroup grains type 1\n"
-             "pair_style granular/acoustic\n"
-             "pair_coeff * * hooke 1000 0.5 tangential linear_history 800 0.5 0.5\n");
+             "pair_style granular\n"
+             "pair_coeff * * hooke 1000 0.5 tangential linear_history/acoustic 800 0.5 0.5\n");
   try {
     L.commands(bad.command);
     FAIL() << "no error for: " << bad.command;
@@ -552,10 +552,19 @@ const BadFix kBadFixes[] = {
     {"ldlt_with_damping",
      "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base damping 0.1 solver ldlt",
      "solver ldlt handles undamped"},
-    {"wrong_pair_style",
+    {"tangential_without_factor",
      "pair_style granular\npair_coeff * * hooke 1000 0.5 tangential linear_history 800 0.5 0.5\n"
      "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base\nrun 0",
-     "requires pair_style granular/acoustic"},
+     "use tangential linear_history/acoustic in pair_coeff"},
+    {"not_pair_granular",
+     "pair_style gran/hooke/history 1000 NULL 0.5 NULL 0.5 1\npair_coeff * *\n"
+     "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base\nrun 0",
+     "requires pair_style granular with a tangential <model>/acoustic sub-model"},
+    {"normal_model_with_history",
+     "pair_style granular\npair_coeff * * mdr 1e4 0.3 100 0 0.5 0.5 damping none tangential "
+     "linear_history/acoustic 800 0.5 0.5\n"
+     "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base\nrun 0",
+     "normal model mdr, whose force depends on the loading history and cannot be linearised"},
 };
 
 INSTANTIATE_TEST_SUITE_P(BadInput, FixErrors, ::testing::ValuesIn(kBadFixes),
@@ -568,8 +577,8 @@ TEST(FixErrors2D, DirectionOutOfPlane)
   LammpsInstance L;
   L.commands("units lj\ndimension 2\natom_style sphere\ncomm_modify vel yes\n"
              "region box block 0 4 0 4 -0.5 0.5\ncreate_box 2 box\ngroup base type 2\n"
-             "pair_style granular/acoustic\n"
-             "pair_coeff * * hooke 1000 0.5 tangential linear_history 800 0.5 0.5\n");
+             "pair_style granular\n"
+             "pair_coeff * * hooke 1000 0.5 tangential linear_history/acoustic 800 0.5 0.5\n");
   try {
     L.command("fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base direction 0 1 1");
     FAIL() << "out-of-plane direction accepted in 2D";

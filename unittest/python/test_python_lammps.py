@@ -1,8 +1,11 @@
-"""python3-lammps drives the LAMMPS built with ACOUSTIC: a small granular deck,
-a compute read back into numpy, and the package listed among the installed ones."""
+"""LAMMPS's own Python module (python/lammps of the LAMMPS tree built here)
+drives the LAMMPS built with ACOUSTIC: the version and packages, a granular
+deck with a tangential /acoustic sub-model, and the outputs of fix
+acoustic/mindlin read back into numpy."""
 import numpy as np
 import pytest
-from lammps import lammps, LMP_STYLE_GLOBAL, LMP_TYPE_SCALAR, LMP_STYLE_ATOM, LMP_TYPE_VECTOR
+from lammps import (lammps, LMP_STYLE_ATOM, LMP_STYLE_GLOBAL, LMP_STYLE_LOCAL, LMP_TYPE_ARRAY,
+                    LMP_TYPE_SCALAR, LMP_TYPE_VECTOR, LMP_SIZE_ROWS)
 
 
 @pytest.fixture
@@ -12,46 +15,71 @@ def lmp():
     instance.close()
 
 
-def test_package_is_installed(lmp):
+def test_version_and_packages(lmp):
+    # 4 Feb 2025 is 20250204
+    assert lmp.version() >= 20250204
     packages = lmp.installed_packages
     assert "GRANULAR" in packages
     assert "ACOUSTIC" in packages
-    assert lmp.has_style("pair", "granular/acoustic")
+    assert lmp.has_style("fix", "acoustic/mindlin")
+    assert lmp.has_style("compute", "vibration/modes")
+    assert not lmp.has_style("pair", "granular/acoustic")
 
 
-def test_granular_deck_and_compute(lmp):
-    lmp.commands_string("""
+DECK = """
 units lj
+dimension 2
 atom_style sphere
-boundary p p fm
+boundary p fm p
 comm_modify vel yes
-region box block 0 6 0 6 0 10
-create_box 1 box
-lattice sc 1.0
-region fill block 0 6 0 6 0.5 6.5
-create_atoms 1 region fill
-displace_atoms all random 0.2 0.2 0.0 4451 units box
-set group all diameter 0.95
+lattice hex 1.1547005383792517
+region box block 0 8 0 5 -0.5 0.5
+create_box 2 box
+region base block INF INF -0.1 0.1 INF INF units box
+region layer block INF INF 0.5 4.3 INF INF units box
+create_atoms 2 region base
+create_atoms 1 region layer
+group base type 2
+group grains type 1
+set group all diameter 1.002
 set group all density 1.0
-pair_style granular/acoustic
-pair_coeff * * hooke 2e4 20 damping mass_velocity tangential linear_history 1e4 0.5 0.5
-fix wall all wall/gran granular hooke 2e4 20 damping mass_velocity tangential linear_history 1e4 0.5 0.5 zplane 0.0 NULL
-fix grav all gravity 10 vector 0.0 0.0 -1.0
-fix nve all nve/sphere
+pair_style granular
+pair_coeff * * hooke 1e4 150 damping mass_velocity tangential linear_history/acoustic 8e3 1.0 0.5
+fix integrate grains nve/sphere
+fix plane all enforce2d
+fix grav grains gravity 1.0 vector 0 -1 0
+timestep 1e-3
+neighbor 0.2 bin
 compute contacts all contact/atom
 compute ncontacts all reduce sum c_contacts
-timestep 5e-4
+thermo_style custom step c_ncontacts
 thermo 0
-run 3000
-""")
-    natoms = lmp.get_natoms()
-    assert natoms == 216
+run 5000
+"""
+
+
+def test_granular_deck_and_fix_outputs(lmp):
+    lmp.commands_string(DECK)
+    assert lmp.get_natoms() == 40
     contacts = lmp.numpy.extract_compute("contacts", LMP_STYLE_ATOM, LMP_TYPE_VECTOR)
     total = lmp.extract_compute("ncontacts", LMP_STYLE_GLOBAL, LMP_TYPE_SCALAR)
-    # a settled packing: every grain touches something, and the reduction equals the numpy sum
     assert total == pytest.approx(np.sum(contacts))
     assert np.mean(contacts) > 2.0
-    # the layer rests on the wall: no grain below its radius, centre of mass low
-    x = lmp.numpy.extract_atom("x")
-    assert np.min(x[:, 2]) > 0.4
-    assert np.mean(x[:, 2]) < 3.5
+
+    lmp.commands_string("""
+fix us all acoustic/mindlin 100 frequency 2.0 amplitude 5e-3 source base model full
+run 100
+""")
+    stats = [lmp.extract_fix("us", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR, k) for k in range(5)]
+    ncontacts, mean, minimum, weak, residual = stats
+    assert ncontacts > 50
+    assert 0.0 <= minimum <= mean < 1.0
+    assert 0.0 <= weak <= 1.0
+    assert residual < 1e-6
+    rows = lmp.extract_fix("us", LMP_STYLE_LOCAL, LMP_SIZE_ROWS)
+    table = lmp.numpy.extract_fix("us", LMP_STYLE_LOCAL, LMP_TYPE_ARRAY, nrow=rows, ncol=6)
+    factors = table[:, 5]
+    assert rows == ncontacts
+    assert np.all((factors >= 0.0) & (factors <= 1.0))
+    assert np.mean(factors) == pytest.approx(mean, rel=1e-12)
+    assert np.min(factors) == pytest.approx(minimum, rel=1e-12)

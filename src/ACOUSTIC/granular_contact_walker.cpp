@@ -1,0 +1,218 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing authors: the ACOUSTIC package developers.
+------------------------------------------------------------------------- */
+
+#include "granular_contact_walker.h"
+
+#include "atom.h"
+#include "error.h"
+#include "fix_neigh_history.h"
+#include "force.h"
+#include "gran_sub_mod_normal.h"
+#include "gran_sub_mod_tangential_acoustic.h"
+#include "granular_model.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "pair_granular.h"
+
+#include <cmath>
+
+using namespace LAMMPS_NS;
+using namespace Granular_NS;
+
+// relative step of the centred difference dF_n/d(delta)
+static constexpr double DIFFERENCE_STEP = 1.0e-4;
+
+namespace {
+
+// the /acoustic interface of a model's tangential sub-model, nullptr if it has none
+AcousticFrictionFactor *acoustic_tangential(GranularModel *model)
+{
+  return dynamic_cast<AcousticFrictionFactor *>(model->tangential_model);
+}
+
+// elastic normal force of the model at overlap delta, the rest of the
+// contact geometry (Reff) being set; also sets the model's contact radius
+double normal_force_at(GranularModel *model, double delta)
+{
+  model->delta = delta;
+  model->dR = delta * model->Reff;
+  model->contact_radius = model->normal_model->calculate_contact_radius();
+  return model->normal_model->calculate_forces();
+}
+
+// dF_n/d(delta) at overlap delta where the force is fn: closed form for the
+// models whose force is a power of delta (plus a constant), otherwise a
+// centred difference of the model's own force
+double normal_stiffness(GranularModel *model, double delta, double fn)
+{
+  const std::string &name = model->normal_model->name;
+  if (name == "hooke") return model->normal_model->coeffs[0];
+  if (name == "hertz" || name == "hertz/material") return 1.5 * fn / delta;
+  if (name == "dmt") {
+    // F = k a delta - 4 pi w Reff with a = sqrt(Reff delta)
+    const double pulloff = 4.0 * M_PI * model->normal_model->coeffs[3] * model->Reff;
+    return 1.5 * (fn + pulloff) / delta;
+  }
+  const double h = DIFFERENCE_STEP * fmax(fabs(delta), 1.0e-8 * model->Reff);
+  const double fplus = normal_force_at(model, delta + h);
+  const double fminus = normal_force_at(model, delta - h);
+  return (fplus - fminus) / (2.0 * h);
+}
+
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+GranularContactWalker::GranularContactWalker(LAMMPS *lmp, const std::string &cmd) :
+    Pointers(lmp), command(cmd), pair(nullptr), history(nullptr)
+{
+}
+
+/* ---------------------------------------------------------------------- */
+
+double GranularContactWalker::friction_factor(const double *factor)
+{
+  return AcousticFrictionFactor::friction_factor(factor);
+}
+
+void GranularContactWalker::set_friction_factor(double *factor, double s)
+{
+  AcousticFrictionFactor::set_friction_factor(factor, s);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void GranularContactWalker::init()
+{
+  pair = dynamic_cast<PairGranular *>(force->pair_match("granular", 1));
+  if (!pair)
+    error->all(FLERR, "{} requires pair_style granular with a tangential <model>/acoustic "
+                      "sub-model (e.g. pair_coeff * * hertz/material 1e8 0.5 0.3 tangential "
+                      "mindlin/acoustic NULL 1.0 0.5)", command);
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, "{} requires atom attributes radius and rmass (use atom_style sphere)",
+               command);
+
+  const int ntypes = atom->ntypes;
+  for (int itype = 1; itype <= ntypes; itype++)
+    for (int jtype = itype; jtype <= ntypes; jtype++)
+      check_model(pair->models_list[pair->types_indices[itype][jtype]], itype, jtype);
+
+  history = nullptr;
+  for (auto *fix : modify->get_fix_by_style("^NEIGH_HISTORY$")) {
+    auto *candidate = dynamic_cast<FixNeighHistory *>(fix);
+    if (candidate && candidate->pair == pair) history = candidate;
+  }
+  if (!history)
+    error->all(FLERR, "{}: pair_style granular keeps no contact history; its tangential models "
+                      "must be /acoustic ones", command);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void GranularContactWalker::check_model(GranularModel *model, int itype, int jtype)
+{
+  const std::string &tangential = model->tangential_model->name;
+  if (!acoustic_tangential(model))
+    error->all(FLERR, "{}: the contacts of atom types {} and {} use tangential model {}, which "
+                      "has no friction factor; use tangential {}/acoustic in pair_coeff",
+               command, itype, jtype, tangential, tangential);
+  const std::string &normal = model->normal_model->name;
+  const bool closed_form = normal == "hooke" || normal == "hertz" || normal == "hertz/material" ||
+      normal == "dmt";
+  if (!closed_form && model->normal_model->size_history > 0)
+    error->all(FLERR, "{}: the contacts of atom types {} and {} use normal model {}, whose force "
+                      "depends on the loading history and cannot be linearised; use hooke, hertz, "
+                      "hertz/material, dmt or jkr", command, itype, jtype, normal);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void GranularContactWalker::linearise(GranularModel *model, GranularContact &c)
+{
+  const double r = sqrt(model->rsq);
+  c.delta = model->radsum - r;
+  for (int k = 0; k < 3; k++) c.n[k] = model->dx[k] / r;
+
+  c.fn = normal_force_at(model, c.delta);
+  const double contact_radius = model->contact_radius;
+  model->Fntot = c.fn;    // the Coulomb limit of the elastic force
+  model->normal_model->set_fncrit();
+  c.fncrit = model->normal_model->get_fncrit();
+  c.kn = normal_stiffness(model, c.delta, c.fn);
+
+  AcousticFrictionFactor *tangential = acoustic_tangential(model);
+  c.kt = tangential->tangential_stiffness(contact_radius);
+  c.mu = model->tangential_model->get_mu();
+  c.factor = model->history + tangential->friction_factor_index();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int groupbit)
+{
+  contacts.clear();
+  if (!pair) init();
+
+  double **x = atom->x;
+  double *radius = atom->radius;
+  int *type = atom->type;
+  int *mask = atom->mask;
+  tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  const bool newton = force->newton_pair;
+  const double *special_lj = force->special_lj;
+  const int size_history = pair->get_size_history();
+
+  NeighList *list = pair->list;
+  int **firsttouch = history->firstflag;
+  double **firstvalue = history->firstvalue;
+
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    const int *jlist = list->firstneigh[i];
+    const int jnum = list->numneigh[i];
+    for (int jj = 0; jj < jnum; jj++) {
+      if (special_lj[(jlist[jj] >> SBBITS) & 3] == 0.0) continue;    // excluded, as in the pair
+      const int j = jlist[jj] & NEIGHMASK;
+      if (!(mask[j] & groupbit)) continue;
+
+      GranularModel *model = pair->models_list[pair->types_indices[type[i]][type[j]]];
+      model->xi = x[i];
+      model->xj = x[j];
+      model->radi = radius[i];
+      model->radj = radius[j];
+      model->i = i;
+      model->j = j;
+      model->itype = type[i];
+      model->jtype = type[j];
+      model->touch = firsttouch[i][jj];
+      if (!model->check_contact()) continue;
+      model->history = &firstvalue[i][size_history * jj];
+
+      GranularContact c;
+      c.i = i;
+      c.j = j;
+      c.owned = newton || j < nlocal || tag[i] < tag[j];
+      c.radi = radius[i];
+      c.radj = radius[j];
+      linearise(model, c);
+      contacts.push_back(c);
+    }
+  }
+}

@@ -1,0 +1,85 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   The current contacts of pair_style granular, read from the pair style's
+   own models and history (as fix granular/mdr walks them), linearised for
+   the vibration network of the ACOUSTIC package:
+     k_n = dF_n/d(delta) of the contact's normal model (closed form for
+           hooke, hertz, hertz/material, dmt; a centred difference of the
+           model's own force for jkr and any other model without history),
+     k_t, mu from its tangential model, which must be an /acoustic one,
+     and the history slot of the contact's friction factor.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_GRANULAR_CONTACT_WALKER_H
+#define LMP_GRANULAR_CONTACT_WALKER_H
+
+#include "pointers.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+namespace Granular_NS {
+  class GranularModel;
+}
+
+// one touching contact of an owned atom
+struct GranularContact {
+  int i, j;                 // local indices: i owned, j owned or ghost
+  bool owned;               // this processor counts the contact (newton off lists a
+                            // contact across sub-domains on both of its processors)
+  double n[3];              // unit normal (x_i - x_j) / |x_i - x_j|
+  double radi, radj;
+  double delta;             // overlap
+  double fn;                // elastic normal force F_n(delta), damping excluded
+  double fncrit;            // normal force of the Coulomb limit (F_n,crit of the normal
+                            // model, damping excluded; = fn unless the model is cohesive)
+  double kn;                // dF_n/d(delta)
+  double kt;                // stiffness of the tangential spring
+  double mu;                // friction coefficient of the tangential model
+  double *factor;           // history slot of the friction factor (see AcousticFrictionFactor)
+};
+
+class GranularContactWalker : protected Pointers {
+ public:
+  // `command` names the style in error messages
+  GranularContactWalker(class LAMMPS *, const std::string &command);
+
+  // find pair granular and its history, check that every model can be
+  // linearised and has an /acoustic tangential model; call from init()
+  void init();
+
+  // the touching contacts of owned atoms with both atoms in groupbit
+  void collect(std::vector<GranularContact> &contacts, int groupbit);
+
+  // the friction factor kept in a contact's history slot
+  static double friction_factor(const double *factor);
+  static void set_friction_factor(double *factor, double s);
+
+  // linearise the contact whose geometry (check_contact) is set in `model`
+  static void linearise(Granular_NS::GranularModel *model, GranularContact &contact);
+
+ private:
+  std::string command;
+  class PairGranular *pair;
+  class FixNeighHistory *history;
+
+  void check_model(Granular_NS::GranularModel *model, int itype, int jtype);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
