@@ -1,4 +1,4 @@
-# Teach a LAMMPS CMake tree (4 Feb 2025 layout, also 4 Jul 2026) about the
+# Teach a LAMMPS CMake tree (4 Feb 2025 and 4 Jul 2026 layouts) about the
 # ACOUSTIC package: add it to STANDARD_PACKAGES and to the list of packages
 # whose cmake/Modules/Packages/<PKG>.cmake is included.  Idempotent.
 function(acoustic_patch_lammps_cmake cmake_dir)
@@ -7,14 +7,21 @@ function(acoustic_patch_lammps_cmake cmake_dir)
   if(_text MATCHES "set\\(STANDARD_PACKAGES[ \t\r\n]+ACOUSTIC")
     return()
   endif()
+  # the first foreach(PKG_WITH_INCL ...) includes the modules of the packages
+  # whose settings must be known before the library target is configured
+  set(_loop "foreach(PKG_WITH_INCL ")
   string(FIND "${_text}" "set(STANDARD_PACKAGES\n" _pos1)
-  string(FIND "${_text}" "foreach(PKG_WITH_INCL KSPACE" _pos2)
+  string(FIND "${_text}" "${_loop}" _pos2)
   if(_pos1 EQUAL -1 OR _pos2 EQUAL -1)
     message(FATAL_ERROR "${_file} does not have the layout of the LAMMPS 4 Feb 2025 "
       "CMake build (STANDARD_PACKAGES, PKG_WITH_INCL); add ACOUSTIC to those lists by hand.")
   endif()
+  string(LENGTH "${_loop}" _length)
+  math(EXPR _after "${_pos2} + ${_length}")
+  string(SUBSTRING "${_text}" 0 ${_after} _head)
+  string(SUBSTRING "${_text}" ${_after} -1 _tail)
+  set(_text "${_head}ACOUSTIC ${_tail}")
   string(REPLACE "set(STANDARD_PACKAGES\n" "set(STANDARD_PACKAGES\n  ACOUSTIC\n" _text "${_text}")
-  string(REPLACE "foreach(PKG_WITH_INCL KSPACE" "foreach(PKG_WITH_INCL ACOUSTIC KSPACE" _text "${_text}")
   file(WRITE ${_file} "${_text}")
 endfunction()
 
