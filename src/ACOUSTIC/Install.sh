@@ -25,6 +25,14 @@ action () {
   fi
 }
 
+# the package extends the GRANULAR package (its sub-models and pair granular)
+if (test $mode = 1) then
+  if (test ! -e ../pair_granular.cpp) then
+    echo "Must install GRANULAR package with ACOUSTIC: make yes-granular yes-acoustic"
+    exit 1
+  fi
+fi
+
 # every source file of the package (styles and numerics)
 for file in *.cpp *.h; do
   test -f ${file} && action $file

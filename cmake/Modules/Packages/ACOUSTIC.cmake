@@ -42,6 +42,10 @@ foreach(_lib dmumps zmumps mumps_common)
     list(APPEND _acoustic_missing lib${_lib})
   endif()
 endforeach()
+if(TARGET lammps AND NOT PKG_GRANULAR)
+  message(FATAL_ERROR "ACOUSTIC package: needs the GRANULAR package (-D PKG_GRANULAR=on), "
+    "whose pair style and sub-models it extends")
+endif()
 if(TARGET lammps)
   # inside LAMMPS: link LAMMPS's own MPI; MUMPS needs a real MPI library, so a
   # serial LAMMPS build (BUILD_MPI off) is refused
