@@ -20,7 +20,7 @@ run_case() {    # name deck vars...
   mpirun -np 2 --oversubscribe "$lmp" -in "$here/$deck" -var model "$model" -var solver "$solver" "$@" \
     -log "$work/log.$name" -screen none -nocite
   awk -v name="$name" '
-    /^ *Step Atoms/ {inthermo=1; first=""; last=""; next}
+    /^ *Step +Atoms/ {inthermo=1; first=""; last=""; next}
     inthermo && /^ *[0-9]/ {if (first == "") first=$0; last=$0; next}
     /^Loop time of/ {loop=$4; inthermo=0}
     END {
