@@ -15,6 +15,9 @@ namespace Acoustic {
 void check_histogram_range(int nbins, double fmin, double fmax)
 {
   if (nbins < 1) throw SolverError("frequency histogram: the number of bins must be >= 1, got " + std::to_string(nbins));
+  if (nbins > MAX_HISTOGRAM_BINS)
+    throw SolverError("frequency histogram: " + std::to_string(nbins) + " bins is more than the " +
+                      std::to_string(MAX_HISTOGRAM_BINS) + " a histogram may have");
   if (!std::isfinite(fmin) || !std::isfinite(fmax) || fmin < 0.0 || fmax <= fmin)
     throw SolverError("frequency histogram: need 0 <= fmin < fmax, got fmin = " + std::to_string(fmin) +
                       " and fmax = " + std::to_string(fmax));

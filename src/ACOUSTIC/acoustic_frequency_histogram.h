@@ -22,7 +22,10 @@ struct FrequencyHistogram {
   double counted = 0.0;             // number of modes in [fmin, fmax] (an estimate for KPM)
 };
 
-// Throws SolverError unless nbins >= 1 and 0 <= fmin < fmax (finite).
+// Largest number of bins (a histogram is a global array of LAMMPS: one row per bin).
+constexpr int MAX_HISTOGRAM_BINS = 1000000;
+
+// Throws SolverError unless 1 <= nbins <= MAX_HISTOGRAM_BINS and 0 <= fmin < fmax (finite).
 void check_histogram_range(int nbins, double fmin, double fmax);
 
 // Exact histogram of a list of frequencies.

@@ -15,11 +15,20 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <limits>
 
 namespace Acoustic {
 
 namespace {
+
+// a number in error messages: %g, readable for 1e200 as for 0.5
+std::string number(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", value);
+  return text;
+}
 
 using Complex = std::complex<double>;
 using Clock = std::chrono::steady_clock;
@@ -499,6 +508,16 @@ HelmholtzSolution HelmholtzSolver::solve(const Eigen::SparseMatrix<double> &stif
     throw SolverError("Helmholtz solve: every mass must be positive and finite");
   if (!std::isfinite(omega) || omega < 0.0)
     throw SolverError("Helmholtz solve: the angular frequency must be >= 0 and finite, got " + std::to_string(omega));
+  if (n > 0 && !std::isfinite(omega * omega * mass.maxCoeff()))
+    throw SolverError("Helmholtz solve: the frequency is out of range for this network: omega^2 m "
+                      "exceeds the range of doubles (omega = " + number(omega) +
+                      ", largest mass " + number(mass.maxCoeff()) +
+                      "); give the frequency in 1/time units of the input script");
+  if (damping.size() != 0 && damping.nonZeros() > 0 &&
+      !std::isfinite(omega * damping.coeffs().cwiseAbs().maxCoeff()))
+    throw SolverError("Helmholtz solve: the frequency is out of range for this network: omega c "
+                      "exceeds the range of doubles for the largest dashpot c; lower the frequency "
+                      "or the damping ratio");
   if (prescribed_values.size() != static_cast<Eigen::Index>(prescribed_dofs.size()))
     throw SolverError("Helmholtz solve: give one prescribed value per prescribed DOF");
   if (!prescribed_values.allFinite()) throw SolverError("Helmholtz solve: a prescribed value is not finite");

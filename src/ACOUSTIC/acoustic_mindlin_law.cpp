@@ -111,8 +111,9 @@ double friction_factor(const MindlinFrictionLaw &law, double tangential_stiffnes
   if (!(std::isfinite(tangential_stiffness) && tangential_stiffness >= 0.0))
     fail("friction update: the tangential stiffness must be >= 0 and finite, got " +
               std::to_string(tangential_stiffness));
-  if (!(std::isfinite(tangential_amplitude) && tangential_amplitude >= 0.0))
-    fail("friction update: the tangential amplitude must be >= 0 and finite, got " +
+  // +inf is allowed: an amplitude beyond the range of doubles lowers the factor to mu_min
+  if (!(tangential_amplitude >= 0.0))
+    fail("friction update: the tangential amplitude must be >= 0, got " +
               std::to_string(tangential_amplitude));
   if (!(std::isfinite(friction_coefficient) && friction_coefficient >= 0.0))
     fail("friction update: the friction coefficient must be >= 0 and finite, got " +
@@ -120,7 +121,17 @@ double friction_factor(const MindlinFrictionLaw &law, double tangential_stiffnes
   if (!(!std::isnan(normal_force)))
     fail("friction update: the normal force is NaN");
   if (normal_force <= 0.0 || friction_coefficient == 0.0) return 1.0;
-  const double reduction = law.cmu * tangential_stiffness * tangential_amplitude / (friction_coefficient * normal_force);
+  // no tangential spring, no vibration or C_mu = 0: no reduction (and no 0 * inf)
+  if (law.cmu == 0.0 || tangential_stiffness == 0.0 || tangential_amplitude == 0.0) return 1.0;
+  const double numerator = law.cmu * tangential_stiffness * tangential_amplitude;
+  const double denominator = friction_coefficient * normal_force;
+  double reduction = numerator / denominator;
+  if (!(std::isfinite(numerator) && std::isfinite(denominator)))
+    // a product beyond the range of doubles: the same ratio from logarithms,
+    // finite or +inf (every factor is positive and all but U_t are finite)
+    reduction = std::exp(std::log(law.cmu) + std::log(tangential_stiffness) +
+                         std::log(tangential_amplitude) - std::log(friction_coefficient) -
+                         std::log(normal_force));
   return std::min(1.0, std::max(law.mu_min, 1.0 - reduction));
 }
 

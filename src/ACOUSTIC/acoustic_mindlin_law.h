@@ -41,7 +41,8 @@ double effective_mass(double mass_i, double mass_j);
 // Dashpot coefficient 2 zeta sqrt(k m_eff) of a contact of stiffness k between two grains.
 double dashpot_coefficient(double damping_ratio, double stiffness, double mass_i, double mass_j);
 
-// U_t = U0 |dq - (dq.n) n| with n the real unit normal and |.| the complex modulus.
+// U_t = U0 |dq - (dq.n) n| with n the real unit normal and |.| the complex modulus
+// (+inf when the product exceeds the range of doubles).
 double tangential_amplitude(const Eigen::Vector3cd &contact_displacement,
                             const Eigen::Vector3d &normal, double amplitude);
 
@@ -53,7 +54,8 @@ struct MindlinFrictionLaw {
 
 // Friction factor mu* / mu of a contact with tangential stiffness k_t, tangential
 // vibration amplitude U_t, friction coefficient mu and normal force f_n.
-// Returns 1 when f_n <= 0 (no load, nothing to reduce) or mu == 0 (no friction).
+// Returns 1 when f_n <= 0 (no load, nothing to reduce), mu == 0 (no friction),
+// or k_t U_t C_mu = 0; U_t = +inf (beyond the range of doubles) gives mu_min.
 double friction_factor(const MindlinFrictionLaw &law, double tangential_stiffness,
                        double tangential_amplitude, double friction_coefficient, double normal_force);
 

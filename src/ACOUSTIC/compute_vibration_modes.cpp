@@ -91,8 +91,8 @@ ComputeVibrationModes::ComputeVibrationModes(LAMMPS *lmp, int narg, char **arg) 
     } else if (key == "bins") {
       need(3);
       nbins = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      fmin = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-      fmax = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+      fmin = VibrationNetworkSettings::finite_number(arg[iarg + 2], CMD, "bins fmin", lmp);
+      fmax = VibrationNetworkSettings::finite_number(arg[iarg + 3], CMD, "bins fmax", lmp);
       try {
         Acoustic::check_histogram_range(nbins, fmin, fmax);
       } catch (Acoustic::SolverError &e) {
@@ -181,6 +181,7 @@ ComputeVibrationModes::ComputeVibrationModes(LAMMPS *lmp, int narg, char **arg) 
       for (int k = 0; k < HISTOGRAM_COLUMNS; k++) histogram[b][k] = 0.0;
     array = histogram;
   }
+  size_peratom_cols = 0;
   if (selected_mode > 0) {
     peratom_flag = 1;
     size_peratom_cols = (settings.model == Acoustic::ContactModel::Full) ? 6 : 3;
@@ -214,12 +215,20 @@ void ComputeVibrationModes::init()
     counts_local[0]++;
     if (atom->mask[i] & fixed_groupbit) counts_local[1]++;
   }
+  bigint outside_local = 0, outside = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & fixed_groupbit) && !(atom->mask[i] & groupbit)) outside_local++;
   MPI_Allreduce(counts_local, counts, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  MPI_Allreduce(&outside_local, &outside, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (counts[0] == 0)
     error->all(FLERR, "{}: compute group {} has no atom", CMD, group->names[igroup]);
   if (fixed_groupbit && counts[1] == 0)
     error->all(FLERR, "{}: fixed group {} has no atom in the compute group {}; the clamped atoms "
                       "must belong to the compute group", CMD, fixed_group, group->names[igroup]);
+  if (outside > 0)
+    error->all(FLERR, "{}: {} atoms of the fixed group {} are not in the compute group {}; the "
+                      "clamped atoms must all belong to the compute group", CMD, outside,
+               fixed_group, group->names[igroup]);
   solved_step = -1;    // the packing may have changed since the last run
 }
 
@@ -321,6 +330,16 @@ void ComputeVibrationModes::solve(bool need_shapes)
   solved_with_shapes = with_shapes;
 }
 
+/* ----------------------------------------------------------------------
+   length of the vector of frequencies this step (fix ave/time mode vector)
+------------------------------------------------------------------------- */
+
+int ComputeVibrationModes::lock_length()
+{
+  solve(false);
+  return static_cast<int>(frequencies.size());
+}
+
 /* ---------------------------------------------------------------------- */
 
 double ComputeVibrationModes::compute_scalar()
@@ -410,7 +429,8 @@ void ComputeVibrationModes::compute_peratom()
 
 double ComputeVibrationModes::memory_usage()
 {
-  double bytes = static_cast<double>(nmax) * (2 * ndof + size_peratom_cols) * sizeof(double);
+  double bytes = static_cast<double>(nmax) * 2 * ndof * sizeof(double);
+  if (peratom_flag) bytes += static_cast<double>(nmax) * size_peratom_cols * sizeof(double);
   bytes += static_cast<double>(frequencies.size() + participation.size()) * sizeof(double);
   bytes += static_cast<double>(nmode_rows_max) * MODE_COLUMNS * sizeof(double);
   bytes += static_cast<double>(selected_shape.size()) * sizeof(double);

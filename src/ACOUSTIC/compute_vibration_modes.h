@@ -42,6 +42,7 @@ class ComputeVibrationModes : public Compute {
   void compute_array() override;
   void compute_peratom() override;
   void compute_local() override;
+  int lock_length() override;
   double memory_usage() override;
 
  private:

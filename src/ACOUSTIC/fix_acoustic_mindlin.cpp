@@ -1,7 +1,7 @@
 /* ----------------------------------------------------------------------
    LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
    https://www.lammps.org/, Sandia National Laboratories
-   Steve Plimpton, sjplimp@sandia.gov
+   LAMMPS development team: developers@lammps.org
 
    Copyright (2003) Sandia Corporation.  Under the terms of Contract
    DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
@@ -14,25 +14,29 @@
 /* ----------------------------------------------------------------------
    Contributing authors: the ACOUSTIC package developers.
 
-   Two-time-scale coupling of an ultrasonic vibration to the DEM: every N
-   steps the steady harmonic response of the contact network to a basal
-   drive is solved (network gathered on rank 0; the MUMPS factorisation
-   runs on all ranks), and each contact's friction factor is set
-   from the tangential vibration it feels (Mindlin law).
+   Two-time-scale coupling of an ultrasonic vibration to the DEM: at every
+   step that is a multiple of N (before the forces of that step) the steady
+   harmonic response of the contact network to a basal drive is solved
+   (network gathered on rank 0; the MUMPS factorisation runs on all ranks),
+   and each contact's friction factor is set from the tangential vibration
+   it feels (Mindlin law).
 ------------------------------------------------------------------------- */
 
 #include "fix_acoustic_mindlin.h"
 
 #include "acoustic_contact_network.h"
 #include "acoustic_solver_error.h"
+#include "collective_error.h"
+#include "granular_contact_walker.h"
 
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
 #include "group.h"
 #include "memory.h"
-#include "granular_contact_walker.h"
+#include "modify.h"
 #include "update.h"
 
 #include <cmath>
@@ -47,8 +51,9 @@ static const char CMD[] = "fix acoustic/mindlin";
 
 FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), source_groupbit(0), direction_axis(-1), source_mode(ALL),
-    solver_choice(Acoustic::LinearSolverChoice::Auto), ndof(0), damped(0), q_atom(nullptr),
-    amplitude_atom(nullptr), contact_array(nullptr), ncontact_rows(0), maxcontact_rows(0)
+    solver_choice(Acoustic::LinearSolverChoice::Auto), reuse(false), ndof(0), damped(0), last_update(-1),
+    atoms_at_end(0), q_atom(nullptr), amplitude_atom(nullptr), contact_array(nullptr),
+    ncontact_rows(0), maxcontact_rows(0)
 {
   if (narg < 10)
     error->all(FLERR, "Illegal {} command: expected fix ID group-ID acoustic/mindlin N "
@@ -62,12 +67,12 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
                  iarg + 1, arg[iarg]);
   };
   expect(4, "frequency");
-  frequency = utils::numeric(FLERR, arg[5], false, lmp);
+  frequency = VibrationNetworkSettings::finite_number(arg[5], CMD, "frequency", lmp);
   if (frequency < 0.0)
     error->all(FLERR, "Illegal {} command: frequency must be >= 0 (1/time units), got {}", CMD,
                frequency);
   expect(6, "amplitude");
-  amplitude = utils::numeric(FLERR, arg[7], false, lmp);
+  amplitude = VibrationNetworkSettings::finite_number(arg[7], CMD, "amplitude", lmp);
   if (amplitude < 0.0)
     error->all(FLERR, "Illegal {} command: amplitude must be >= 0 (distance units), got {}", CMD,
                amplitude);
@@ -80,69 +85,8 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
   const int dim = domain->dimension;
   direction[0] = direction[1] = direction[2] = 0.0;
   direction[dim == 3 ? 2 : 1] = 1.0;
-
-  int iarg = 10;
-  while (iarg < narg) {
-    const int used = settings.parse(iarg, narg, arg, CMD, lmp, true);
-    if (used > 0) {
-      iarg += used;
-      continue;
-    }
-    const std::string key = arg[iarg];
-    auto need = [&](int n) {
-      if (iarg + n >= narg)
-        error->all(FLERR, "Illegal {} command: keyword {} needs {} value(s)", CMD, key, n);
-    };
-    if (key == "direction") {
-      need(3);
-      for (int k = 0; k < 3; k++) direction[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
-      iarg += 4;
-    } else if (key == "mode") {
-      need(1);
-      if (strcmp(arg[iarg + 1], "all") == 0) source_mode = ALL;
-      else if (strcmp(arg[iarg + 1], "normal") == 0) source_mode = NORMAL;
-      else
-        error->all(FLERR, "Illegal {} command: mode must be 'all' or 'normal', got '{}'", CMD,
-                   arg[iarg + 1]);
-      iarg += 2;
-    } else if (key == "cmu") {
-      need(1);
-      law.cmu = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (law.cmu < 0.0) error->all(FLERR, "Illegal {} command: cmu must be >= 0, got {}", CMD, law.cmu);
-      iarg += 2;
-    } else if (key == "mu_min") {
-      need(1);
-      law.mu_min = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (law.mu_min < 0.0 || law.mu_min > 1.0)
-        error->all(FLERR, "Illegal {} command: mu_min must be in [0, 1], got {}", CMD, law.mu_min);
-      iarg += 2;
-    } else if (key == "solver") {
-      need(1);
-      try {
-        solver_choice = Acoustic::linear_solver_from_name(arg[iarg + 1]);
-      } catch (Acoustic::SolverError &e) {
-        error->all(FLERR, "Illegal {} command: {}", CMD, e.what());
-      }
-      iarg += 2;
-    } else {
-      error->all(FLERR, "Illegal {} command: unknown keyword {}; keywords are direction, mode, "
-                        "stiffness, kappa_scale, ratio, cmu, mu_min, model, damping, solver", CMD, key);
-    }
-  }
-
-  // the drive direction
-  const double norm = sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
-                           direction[2] * direction[2]);
-  if (norm == 0.0) error->all(FLERR, "Illegal {} command: direction must not be the zero vector", CMD);
-  if (dim == 2 && direction[2] != 0.0)
-    error->all(FLERR, "Illegal {} command: in 2D the direction must lie in the xy plane "
-                      "(dz = 0)", CMD);
-  for (int k = 0; k < 3; k++) direction[k] /= norm;
-  for (int k = 0; k < dim; k++)
-    if (fabs(direction[k]) == 1.0) direction_axis = k;
-  if (source_mode == NORMAL && direction_axis < 0)
-    error->all(FLERR, "Illegal {} command: mode normal prescribes one Cartesian component of the "
-                      "source grains; give a direction along x, y or z", CMD);
+  parse_keywords(10, narg, arg);
+  normalise_direction();
 
   damped = (settings.damping_ratio > 0.0);
   if (damped && solver_choice == Acoustic::LinearSolverChoice::Ldlt)
@@ -165,25 +109,46 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
   local_freq = nevery;
   for (double &s : stats) s = 0.0;
 
+  // the step of the last update and the statistics, and the per-atom
+  // amplitudes, continue in a run restarted from a restart file
+  restart_global = 1;
+  restart_peratom = 1;
+
   network.reset(new VibrationNetwork(lmp, settings, CMD));
   // collective: with solver auto or mumps every rank takes part in the factorisation
   solver.reset(new Acoustic::HelmholtzSolver(solver_choice, 1e-6, world));
-  // between two updates few contacts change: precondition with the last factors
-  solver->set_reuse_factorisation(true);
+  // reuse yes: between two updates few contacts change, precondition with the
+  // last factors (faster, but the factors then depend on the earlier updates)
+  solver->set_reuse_factorisation(reuse);
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nlocal; i++) {
     for (int k = 0; k < 2 * ndof; k++) q_atom[i][k] = 0.0;
     for (int k = 0; k < size_peratom_cols; k++) amplitude_atom[i][k] = 0.0;
   }
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   deleted between runs (unfix): full friction again on the contacts the
+   fix acted on
+------------------------------------------------------------------------- */
 
 FixAcousticMindlin::~FixAcousticMindlin()
 {
+  // update and force are gone when LAMMPS itself is deleted (clear, end of input)
+  if (update && force && update->whichflag == 0 && last_update >= 0) {
+    int same_atoms = (atoms_fingerprint() == atoms_at_end) ? 1 : 0, same_all = 0;
+    MPI_Allreduce(&same_atoms, &same_all, 1, MPI_INT, MPI_MIN, world);
+    GranularContactWalker walker(lmp, CMD);
+    if (!same_all || !walker.reset_factors_between_runs(groupbit))
+      error->warning(FLERR, "{} {}: the friction factors it set stay in the contact histories: "
+                            "atoms moved between processors since the last run. Use 'run 0' "
+                            "before 'unfix {}' to restore full friction", CMD, id, id);
+  }
   atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
   memory->destroy(q_atom);
   memory->destroy(amplitude_atom);
   memory->destroy(contact_array);
@@ -191,9 +156,92 @@ FixAcousticMindlin::~FixAcousticMindlin()
 
 /* ---------------------------------------------------------------------- */
 
+void FixAcousticMindlin::parse_keywords(int iarg, int narg, char **arg)
+{
+  while (iarg < narg) {
+    const int used = settings.parse(iarg, narg, arg, CMD, lmp, true);
+    if (used > 0) {
+      iarg += used;
+      continue;
+    }
+    const std::string key = arg[iarg];
+    auto need = [&](int n) {
+      if (iarg + n >= narg)
+        error->all(FLERR, "Illegal {} command: keyword {} needs {} value(s)", CMD, key, n);
+    };
+    if (key == "direction") {
+      need(3);
+      const char *names[3] = {"direction dx", "direction dy", "direction dz"};
+      for (int k = 0; k < 3; k++)
+        direction[k] = VibrationNetworkSettings::finite_number(arg[iarg + 1 + k], CMD, names[k], lmp);
+      iarg += 4;
+    } else if (key == "mode") {
+      need(1);
+      if (strcmp(arg[iarg + 1], "all") == 0) source_mode = ALL;
+      else if (strcmp(arg[iarg + 1], "normal") == 0) source_mode = NORMAL;
+      else
+        error->all(FLERR, "Illegal {} command: mode must be 'all' or 'normal', got '{}'", CMD,
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (key == "cmu") {
+      need(1);
+      law.cmu = VibrationNetworkSettings::finite_number(arg[iarg + 1], CMD, "cmu", lmp);
+      if (law.cmu < 0.0) error->all(FLERR, "Illegal {} command: cmu must be >= 0, got {}", CMD, law.cmu);
+      iarg += 2;
+    } else if (key == "mu_min") {
+      need(1);
+      law.mu_min = VibrationNetworkSettings::finite_number(arg[iarg + 1], CMD, "mu_min", lmp);
+      if (law.mu_min < 0.0 || law.mu_min > 1.0)
+        error->all(FLERR, "Illegal {} command: mu_min must be in [0, 1], got {}", CMD, law.mu_min);
+      iarg += 2;
+    } else if (key == "reuse") {
+      need(1);
+      reuse = utils::logical(FLERR, arg[iarg + 1], false, lmp) != 0;
+      iarg += 2;
+    } else if (key == "solver") {
+      need(1);
+      try {
+        solver_choice = Acoustic::linear_solver_from_name(arg[iarg + 1]);
+      } catch (Acoustic::SolverError &e) {
+        error->all(FLERR, "Illegal {} command: {}", CMD, e.what());
+      }
+      iarg += 2;
+    } else {
+      error->all(FLERR, "Illegal {} command: unknown keyword {}; keywords are direction, mode, "
+                        "stiffness, kappa_scale, ratio, cmu, mu_min, model, damping, solver, reuse", CMD, key);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   unit drive direction, without overflow or underflow for any finite input
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::normalise_direction()
+{
+  const int dim = domain->dimension;
+  if (dim == 2 && direction[2] != 0.0)
+    error->all(FLERR, "Illegal {} command: in 2D the direction must lie in the xy plane "
+                      "(dz = 0)", CMD);
+  const double largest = MAX(fabs(direction[0]), MAX(fabs(direction[1]), fabs(direction[2])));
+  if (largest == 0.0)
+    error->all(FLERR, "Illegal {} command: direction must not be the zero vector", CMD);
+  for (double &d : direction) d /= largest;
+  const double norm = sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
+                           direction[2] * direction[2]);
+  for (double &d : direction) d /= norm;
+  for (int k = 0; k < dim; k++)
+    if (fabs(direction[k]) == 1.0) direction_axis = k;
+  if (source_mode == NORMAL && direction_axis < 0)
+    error->all(FLERR, "Illegal {} command: mode normal prescribes one Cartesian component of the "
+                      "source grains; give a direction along x, y or z", CMD);
+}
+
+/* ---------------------------------------------------------------------- */
+
 int FixAcousticMindlin::setmask()
 {
-  return END_OF_STEP;
+  return PRE_FORCE | POST_RUN;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -206,33 +254,79 @@ void FixAcousticMindlin::init()
     error->all(FLERR, "{}: source group {} no longer exists", CMD, source_group);
   source_groupbit = group->bitmask[igroup_source];
 
-  int nsource_local = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && (atom->mask[i] & source_groupbit)) nsource_local++;
-  int nsource = 0;
-  MPI_Allreduce(&nsource_local, &nsource, 1, MPI_INT, MPI_SUM, world);
-  if (nsource == 0)
+  // the source atoms: at least one, all of them in the fix group
+  bigint counts_local[2] = {0, 0}, counts[2];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & source_groupbit)) continue;
+    if (atom->mask[i] & groupbit) counts_local[0]++;
+    else counts_local[1]++;
+  }
+  MPI_Allreduce(counts_local, counts, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (counts[0] == 0)
     error->all(FLERR, "{}: source group {} has no atom in the fix group {}; the source grains "
                       "must belong to the fix group", CMD, source_group, group->names[igroup]);
-}
+  if (counts[1] > 0)
+    error->all(FLERR, "{}: {} atoms of the source group {} are not in the fix group {}; the "
+                      "source grains must all belong to the fix group", CMD, counts[1],
+               source_group, group->names[igroup]);
 
-/* ---------------------------------------------------------------------- */
-
-void FixAcousticMindlin::setup(int /*vflag*/)
-{
-  update_factors();
-}
-
-void FixAcousticMindlin::end_of_step()
-{
-  update_factors();
+  // one fix acoustic/mindlin per contact: the factors of two would overwrite each other
+  for (auto *other : modify->get_fix_by_style("^acoustic/mindlin$")) {
+    if (other == this) continue;
+    bigint common_local = 0, common = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) common_local++;
+    MPI_Allreduce(&common_local, &common, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (common > 0)
+      error->all(FLERR, "{} {} and fix {} both act on the contacts of the {} atoms their groups "
+                        "share, and would overwrite each other's friction factors; use one fix "
+                        "acoustic/mindlin, or groups without common atoms", CMD, id, other->id,
+                 common);
+  }
 }
 
 /* ----------------------------------------------------------------------
-   rank 0: prescribed DOFs of the source and the Helmholtz solve
+   factors of the last multiple of N: those of the uninterrupted run
 ------------------------------------------------------------------------- */
 
-void FixAcousticMindlin::solve_on_rank0(bool &ok)
+bool FixAcousticMindlin::factors_are_current() const
+{
+  const bigint step = update->ntimestep;
+  return last_update >= 0 && last_update <= step && last_update >= step - step % nevery;
+}
+
+/* ----------------------------------------------------------------------
+   before the forces of the setup: update only if the factors are not those
+   an uninterrupted run would have now (a new fix, a changed timestep)
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::setup_pre_force(int /*vflag*/)
+{
+  if (!factors_are_current()) {
+    update_factors();
+    return;
+  }
+  network->collect(groupbit);
+  factor_statistics(network->local_contacts());
+}
+
+void FixAcousticMindlin::pre_force(int /*vflag*/)
+{
+  if (update->ntimestep % nevery == 0) update_factors();
+}
+
+void FixAcousticMindlin::post_run()
+{
+  atoms_at_end = atoms_fingerprint();
+}
+
+/* ----------------------------------------------------------------------
+   rank 0: prescribed DOFs of the source and the Helmholtz solve; false if
+   the solve failed (singular, inaccurate: a WARNING) or the input is
+   invalid (failure holds the ERROR message)
+------------------------------------------------------------------------- */
+
+bool FixAcousticMindlin::solve_drive(std::string &failure)
 {
   const double t0 = MPI_Wtime();
   const Acoustic::ContactNetwork &net = network->network();
@@ -257,20 +351,20 @@ void FixAcousticMindlin::solve_on_rank0(bool &ok)
   Eigen::VectorXcd qp(values.size());
   for (std::size_t k = 0; k < values.size(); k++) qp[k] = values[k];
 
-  const Eigen::SparseMatrix<double> K = net.stiffness_matrix();
-  const Eigen::SparseMatrix<double> C =
-      net.has_damping() ? net.damping_matrix() : Eigen::SparseMatrix<double>(0, 0);
-  const Eigen::VectorXd M = net.mass_diagonal();
-  const double t1 = MPI_Wtime();
-
   Acoustic::HelmholtzSolution sol;
+  double t1 = t0;
   try {
+    const Eigen::SparseMatrix<double> K = net.stiffness_matrix();
+    const Eigen::SparseMatrix<double> C =
+        net.has_damping() ? net.damping_matrix() : Eigen::SparseMatrix<double>(0, 0);
+    const Eigen::VectorXd M = net.mass_diagonal();
+    t1 = MPI_Wtime();
     sol = solver->solve(K, C, M, 2.0 * M_PI * frequency, prescribed, qp);
   } catch (Acoustic::SolverError &e) {
-    error->one(FLERR, "{}: {}", CMD, e.what());
+    failure = fmt::format("{}: {}", CMD, e.what());
+    return false;
   }
   const double t2 = MPI_Wtime();
-  ok = sol.ok();
   const Acoustic::SolverTimings &timing = solver->last_timings();
   stats[RESIDUAL] = sol.relative_residual;
   stats[TIME_ASSEMBLY] = t1 - t0;
@@ -279,18 +373,20 @@ void FixAcousticMindlin::solve_on_rank0(bool &ok)
   stats[NANALYSES] = static_cast<double>(solver->num_analyses());
   stats[NFACTORISATIONS] = static_cast<double>(solver->num_factorisations());
   stats[NREUSES] = static_cast<double>(solver->num_reuses());
-  if (!ok)
+  if (!sol.ok()) {
     error->warning(FLERR, "{}: the Helmholtz solve at f = {} failed ({}: {}; relative residual "
                           "{:.3g}); keeping the previous friction factors. A frequency on a "
                           "resonance of an undamped network is singular: add damping or move f",
                    CMD, frequency, Acoustic::solve_status_name(sol.status), sol.message,
                    sol.relative_residual);
-  else
-    solution = sol.q;
+    return false;
+  }
+  solution = sol.q;
+  return true;
 }
 
 /* ----------------------------------------------------------------------
-   assemble, solve, and set every contact's friction factor
+   build the network, solve, set every contact's friction factor
 ------------------------------------------------------------------------- */
 
 void FixAcousticMindlin::update_factors()
@@ -298,28 +394,43 @@ void FixAcousticMindlin::update_factors()
   const double t0 = MPI_Wtime();
   network->build(groupbit, source_groupbit);
   stats[TIME_GATHER] = MPI_Wtime() - t0;
-  stats[TIME_ASSEMBLY] = stats[TIME_FACTORISATION] = stats[TIME_SOLVE] = 0.0;
+  stats[TIME_ASSEMBLY] = stats[TIME_FACTORISATION] = stats[TIME_SOLVE] = stats[TIME_UPDATE] = 0.0;
+  last_update = update->ntimestep;
 
-  const int nlocal = atom->nlocal;
+  int solved = 1;
   if (frequency > 0.0) {
-    int ok = 1;
+    std::string failure;
     if (comm->me == 0) {
-      bool good = true;
-      solve_on_rank0(good);
+      solved = solve_drive(failure) ? 1 : 0;
       solver->release_workers();
-      ok = good ? 1 : 0;
     } else {
       solver->serve();    // factorisations and solves driven by rank 0
     }
-    MPI_Bcast(&ok, 1, MPI_INT, 0, world);
+    CollectiveError errors(lmp);
+    if (!failure.empty()) errors.report(failure);
+    errors.raise(FLERR);
+    MPI_Bcast(&solved, 1, MPI_INT, 0, world);
     MPI_Bcast(stats + RESIDUAL, NREUSES - RESIDUAL + 1, MPI_DOUBLE, 0, world);
-    if (!ok) {
-      stats[TIME_TOTAL] += MPI_Wtime() - t0;
-      return;
-    }
   }
 
   const double t1 = MPI_Wtime();
+  if (solved) {
+    set_amplitudes();
+    set_factors();
+  }
+  factor_statistics(network->local_contacts());
+  const double t2 = MPI_Wtime();
+  stats[TIME_UPDATE] = t2 - t1;
+  stats[TIME_TOTAL] += t2 - t0;
+}
+
+/* ----------------------------------------------------------------------
+   DOF amplitudes of the owned atoms and their ghosts, per-atom output
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::set_amplitudes()
+{
+  const int nlocal = atom->nlocal;
   if (frequency > 0.0) {
     network->scatter(solution, q_atom, groupbit);
     comm->forward_comm(this);
@@ -327,8 +438,6 @@ void FixAcousticMindlin::update_factors()
     for (int i = 0; i < nlocal; i++)
       for (int k = 0; k < 2 * ndof; k++) q_atom[i][k] = 0.0;
   }
-
-  // per-atom amplitudes (distance units)
   const int dim = domain->dimension;
   for (int i = 0; i < nlocal; i++) {
     for (int k = 0; k < size_peratom_cols; k++) amplitude_atom[i][k] = 0.0;
@@ -342,8 +451,15 @@ void FixAcousticMindlin::update_factors()
       }
     }
   }
+}
 
-  // friction factor of each contact from the vibration of its contact point
+/* ----------------------------------------------------------------------
+   the friction factor of each contact from the vibration of its contact
+   point, into the contact history; one local output row per contact
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::set_factors()
+{
   const auto &contacts = network->local_contacts();
   tagint *tag = atom->tag;
   if (static_cast<int>(contacts.size()) > maxcontact_rows) {
@@ -352,7 +468,8 @@ void FixAcousticMindlin::update_factors()
     memory->create(contact_array, maxcontact_rows, size_local_cols, "acoustic/mindlin:contacts");
   }
   ncontact_rows = 0;
-  double sum = 0.0, minimum = 1.0, nweak = 0.0, ncounted = 0.0;
+  const int dim = domain->dimension;
+  CollectiveError errors(lmp);
   Eigen::VectorXcd qi(ndof), qj(ndof);
   for (const auto &c : contacts) {
     double s = 1.0, ut = 0.0;
@@ -367,10 +484,16 @@ void FixAcousticMindlin::update_factors()
         qj[k] = std::complex<double>(q_atom[b][2 * k], q_atom[b][2 * k + 1]);
       }
       const Eigen::Vector3d n(sign * c.n[0], sign * c.n[1], sign * c.n[2]);
-      const Eigen::Vector3cd delta = Acoustic::contact_point_displacement(
-          dim, settings.model, n, flip ? c.radj : c.radi, flip ? c.radi : c.radj, qi, qj);
-      ut = Acoustic::tangential_amplitude(delta, n, amplitude);
-      s = Acoustic::friction_factor(law, c.kt, ut, c.mu, c.fncrit);
+      try {
+        const Eigen::Vector3cd delta = Acoustic::contact_point_displacement(
+            dim, settings.model, n, flip ? c.radj : c.radi, flip ? c.radi : c.radj, qi, qj);
+        ut = Acoustic::tangential_amplitude(delta, n, amplitude);
+        s = Acoustic::friction_factor(law, c.kt, ut, c.mu, c.fncrit);
+      } catch (Acoustic::SolverError &e) {
+        errors.report(fmt::format("{}: contact of atoms {} and {}: {}", CMD, tag[c.i], tag[c.j],
+                                  e.what()));
+        continue;    // the factor stays as it was
+      }
     }
     GranularContactWalker::set_friction_factor(c.factor, s);
     if (!c.owned) continue;
@@ -381,14 +504,27 @@ void FixAcousticMindlin::update_factors()
     row[3] = c.kn;
     row[4] = ut;
     row[5] = s;
+  }
+  size_local_rows = ncontact_rows;
+  array_local = contact_array;
+  errors.raise(FLERR);
+}
+
+/* ----------------------------------------------------------------------
+   statistics of the factors in the contact histories (each contact once)
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::factor_statistics(const std::vector<GranularContact> &contacts)
+{
+  double sum = 0.0, minimum = 1.0, nweak = 0.0, ncounted = 0.0;
+  for (const auto &c : contacts) {
+    if (!c.owned) continue;
+    const double s = GranularContactWalker::friction_factor(c.factor);
     sum += s;
     minimum = MIN(minimum, s);
     if (s < 0.5) nweak += 1.0;
     ncounted += 1.0;
   }
-  size_local_rows = ncontact_rows;
-  array_local = contact_array;
-
   double local[3] = {sum, nweak, ncounted}, global[3];
   MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, world);
   double global_min = 1.0;
@@ -397,9 +533,26 @@ void FixAcousticMindlin::update_factors()
   stats[MEAN_FACTOR] = (global[2] > 0.0) ? global[0] / global[2] : 1.0;
   stats[MIN_FACTOR] = global_min;
   stats[WEAK_FRACTION] = (global[2] > 0.0) ? global[1] / global[2] : 0.0;
-  const double t2 = MPI_Wtime();
-  stats[TIME_UPDATE] = t2 - t1;
-  stats[TIME_TOTAL] += t2 - t0;
+}
+
+/* ----------------------------------------------------------------------
+   the owned and ghost atoms of this processor, in order
+------------------------------------------------------------------------- */
+
+std::uint64_t FixAcousticMindlin::atoms_fingerprint() const
+{
+  // FNV-1a over nlocal, nghost and the atom IDs
+  std::uint64_t hash = 1469598103934665603ULL;
+  auto mix = [&hash](std::uint64_t value) {
+    for (int byte = 0; byte < 8; byte++) {
+      hash ^= (value >> (8 * byte)) & 0xff;
+      hash *= 1099511628211ULL;
+    }
+  };
+  mix(static_cast<std::uint64_t>(atom->nlocal));
+  mix(static_cast<std::uint64_t>(atom->nghost));
+  for (int i = 0; i < atom->nlocal + atom->nghost; i++) mix(static_cast<std::uint64_t>(atom->tag[i]));
+  return hash;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -407,6 +560,28 @@ void FixAcousticMindlin::update_factors()
 double FixAcousticMindlin::compute_vector(int n)
 {
   return stats[n];
+}
+
+/* ----------------------------------------------------------------------
+   global restart state: the step of the last update and the statistics
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  double list[NVECTOR + 1];
+  list[0] = static_cast<double>(last_update);
+  for (int k = 0; k < NVECTOR; k++) list[k + 1] = stats[k];
+  const int size = (NVECTOR + 1) * sizeof(double);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(list, sizeof(double), NVECTOR + 1, fp);
+}
+
+void FixAcousticMindlin::restart(char *buf)
+{
+  const auto *list = reinterpret_cast<double *>(buf);
+  last_update = static_cast<bigint>(list[0]);
+  for (int k = 0; k < NVECTOR; k++) stats[k] = list[k + 1];
 }
 
 /* ---------------------------------------------------------------------- */
@@ -438,6 +613,43 @@ int FixAcousticMindlin::unpack_exchange(int nlocal, double *buf)
   for (int k = 0; k < 2 * ndof; k++) q_atom[nlocal][k] = 0.0;
   return m;
 }
+
+/* ----------------------------------------------------------------------
+   per-atom restart state: the amplitudes of the last update
+------------------------------------------------------------------------- */
+
+int FixAcousticMindlin::pack_restart(int i, double *buf)
+{
+  int m = 1;
+  for (int k = 0; k < size_peratom_cols; k++) buf[m++] = amplitude_atom[i][k];
+  // pack buf[0] this way because other fixes unpack it
+  buf[0] = m;
+  return m;
+}
+
+void FixAcousticMindlin::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  // skip to the nth set of extra values; unpack the nth first values this way
+  // because other fixes pack them
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < size_peratom_cols; k++) amplitude_atom[nlocal][k] = extra[nlocal][m++];
+  for (int k = 0; k < 2 * ndof; k++) q_atom[nlocal][k] = 0.0;
+}
+
+int FixAcousticMindlin::size_restart(int /*nlocal*/)
+{
+  return size_peratom_cols + 1;
+}
+
+int FixAcousticMindlin::maxsize_restart()
+{
+  return size_peratom_cols + 1;
+}
+
+/* ---------------------------------------------------------------------- */
 
 int FixAcousticMindlin::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
                                           int * /*pbc*/)

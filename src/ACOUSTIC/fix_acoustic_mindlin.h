@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
    https://www.lammps.org/, Sandia National Laboratories
-   Steve Plimpton, sjplimp@sandia.gov
+   LAMMPS development team: developers@lammps.org
 
    Copyright (2003) Sandia Corporation.  Under the terms of Contract
    DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
@@ -26,6 +26,7 @@ FixStyle(acoustic/mindlin,FixAcousticMindlin);
 #include "acoustic_mindlin_law.h"
 #include "vibration_network.h"
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -37,14 +38,21 @@ class FixAcousticMindlin : public Fix {
   ~FixAcousticMindlin() override;
   int setmask() override;
   void init() override;
-  void setup(int) override;
-  void end_of_step() override;
+  void setup_pre_force(int) override;
+  void pre_force(int) override;
+  void post_run() override;
   double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   double memory_usage() override;
@@ -79,11 +87,15 @@ class FixAcousticMindlin : public Fix {
   VibrationNetworkSettings settings;
   Acoustic::MindlinFrictionLaw law;
   Acoustic::LinearSolverChoice solver_choice;
+  bool reuse;    // solve by the last solution or earlier factors when they still fit
 
   std::unique_ptr<VibrationNetwork> network;
   std::unique_ptr<Acoustic::HelmholtzSolver> solver;
-  int ndof;            // DOFs per grain of the network
+  int ndof;      // DOFs per grain of the network
   int damped;
+
+  bigint last_update;           // step of the last update of the factors, -1: none yet
+  std::uint64_t atoms_at_end;   // fingerprint of the atoms at the end of the last run
 
   double **q_atom;            // complex DOF amplitudes per atom, (re, im) pairs
   double **amplitude_atom;    // per-atom output: translational amplitudes
@@ -92,8 +104,15 @@ class FixAcousticMindlin : public Fix {
   double stats[NVECTOR];
   Eigen::VectorXcd solution;    // rank 0: DOF amplitudes of the last successful solve
 
+  void parse_keywords(int iarg, int narg, char **arg);
+  void normalise_direction();
+  bool factors_are_current() const;
   void update_factors();
-  void solve_on_rank0(bool &ok);
+  bool solve_drive(std::string &failure);
+  void set_amplitudes();
+  void set_factors();
+  void factor_statistics(const std::vector<GranularContact> &contacts);
+  std::uint64_t atoms_fingerprint() const;
 };
 
 }    // namespace LAMMPS_NS

@@ -18,6 +18,7 @@
 #include "granular_contact_walker.h"
 
 #include "atom.h"
+#include "collective_error.h"
 #include "error.h"
 #include "fix_neigh_history.h"
 #include "force.h"
@@ -96,9 +97,22 @@ void GranularContactWalker::set_friction_factor(double *factor, double s)
 
 /* ---------------------------------------------------------------------- */
 
-void GranularContactWalker::init()
+void GranularContactWalker::locate()
 {
   pair = dynamic_cast<PairGranular *>(force->pair_match("granular", 1));
+  history = nullptr;
+  if (!pair) return;
+  for (auto *fix : modify->get_fix_by_style("^NEIGH_HISTORY$")) {
+    auto *candidate = dynamic_cast<FixNeighHistory *>(fix);
+    if (candidate && candidate->pair == pair) history = candidate;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void GranularContactWalker::init()
+{
+  locate();
   if (!pair)
     error->all(FLERR, "{} requires pair_style granular with a tangential <model>/acoustic "
                       "sub-model (e.g. pair_coeff * * hertz/material 1e8 0.5 0.3 tangential "
@@ -112,11 +126,6 @@ void GranularContactWalker::init()
     for (int jtype = itype; jtype <= ntypes; jtype++)
       check_model(pair->models_list[pair->types_indices[itype][jtype]], itype, jtype);
 
-  history = nullptr;
-  for (auto *fix : modify->get_fix_by_style("^NEIGH_HISTORY$")) {
-    auto *candidate = dynamic_cast<FixNeighHistory *>(fix);
-    if (candidate && candidate->pair == pair) history = candidate;
-  }
   if (!history)
     error->all(FLERR, "{}: pair_style granular keeps no contact history; its tangential models "
                       "must be /acoustic ones", command);
@@ -163,7 +172,8 @@ void GranularContactWalker::linearise(GranularModel *model, GranularContact &c)
 
 /* ---------------------------------------------------------------------- */
 
-void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int groupbit)
+void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int groupbit,
+                                    CollectiveError &errors)
 {
   contacts.clear();
   if (!pair) init();
@@ -203,6 +213,11 @@ void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int 
       model->jtype = type[j];
       model->touch = firsttouch[i][jj];
       if (!model->check_contact()) continue;
+      if (model->rsq == 0.0) {
+        errors.report(fmt::format("{}: atoms {} and {} are at the same position: their contact "
+                                  "has no normal", command, tag[i], tag[j]));
+        continue;
+      }
       model->history = &firstvalue[i][size_history * jj];
 
       GranularContact c;
@@ -212,7 +227,47 @@ void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int 
       c.radi = radius[i];
       c.radj = radius[j];
       linearise(model, c);
+      if (!(std::isfinite(c.fn) && std::isfinite(c.fncrit) && std::isfinite(c.kn) &&
+            std::isfinite(c.kt))) {
+        errors.report(fmt::format("{}: contact of atoms {} and {} (overlap {}): its normal model "
+                                  "{} gives F_n = {}, k_n = {}, k_t = {}; check its coefficients",
+                                  command, tag[i], tag[j], c.delta, model->normal_model->name,
+                                  c.fn, c.kn, c.kt));
+        continue;
+      }
       contacts.push_back(c);
     }
   }
+}
+
+/* ---------------------------------------------------------------------- */
+
+bool GranularContactWalker::reset_factors_between_runs(int groupbit)
+{
+  locate();
+  int usable = (pair && history && pair->list && history->firstflag) ? 1 : 0;
+  int usable_all = 0;
+  MPI_Allreduce(&usable, &usable_all, 1, MPI_INT, MPI_MIN, world);
+  if (!usable_all) return false;
+
+  int *type = atom->type;
+  int *mask = atom->mask;
+  const int size_history = pair->get_size_history();
+  NeighList *list = pair->list;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (!(mask[j] & groupbit) || !history->firstflag[i][jj]) continue;
+      GranularModel *model = pair->models_list[pair->types_indices[type[i]][type[j]]];
+      AcousticFrictionFactor *tangential = acoustic_tangential(model);
+      if (!tangential) continue;
+      double *values = &history->firstvalue[i][size_history * jj];
+      set_friction_factor(values + tangential->friction_factor_index(), 1.0);
+    }
+  }
+  history->pre_exchange();
+  return true;
 }

@@ -62,8 +62,18 @@ class GranularContactWalker : protected Pointers {
   // linearised and has an /acoustic tangential model; call from init()
   void init();
 
-  // the touching contacts of owned atoms with both atoms in groupbit
-  void collect(std::vector<GranularContact> &contacts, int groupbit);
+  // the touching contacts of owned atoms with both atoms in groupbit; a
+  // contact that cannot be linearised (coincident atoms, a non-finite force)
+  // is reported to `errors` with its atom IDs and left out
+  void collect(std::vector<GranularContact> &contacts, int groupbit, class CollectiveError &errors);
+
+  // Between runs: set the friction factor of every contact of the group
+  // with history to 1 and hand the histories to the history fix, which
+  // restores the neighbor lists from its per-atom copy at the next setup.
+  // The neighbor lists must still match the atoms (no exchange of atoms
+  // since the last run).  Collective; false, doing nothing, when pair
+  // granular, its history or its neighbor list are gone.
+  bool reset_factors_between_runs(int groupbit);
 
   // the friction factor kept in a contact's history slot
   static double friction_factor(const double *factor);
@@ -78,6 +88,7 @@ class GranularContactWalker : protected Pointers {
   class FixNeighHistory *history;
 
   void check_model(Granular_NS::GranularModel *model, int itype, int jtype);
+  void locate();    // pair granular and its history fix, nullptr if absent
 };
 
 }    // namespace LAMMPS_NS

@@ -1,7 +1,7 @@
 /* ----------------------------------------------------------------------
    LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
    https://www.lammps.org/, Sandia National Laboratories
-   Steve Plimpton, sjplimp@sandia.gov
+   LAMMPS development team: developers@lammps.org
 
    Copyright (2003) Sandia Corporation.  Under the terms of Contract
    DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
@@ -19,21 +19,33 @@
 
 #include "acoustic_mindlin_law.h"
 #include "acoustic_solver_error.h"
+#include "collective_error.h"
 
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "force.h"
 
 #include <algorithm>
-#include <cstring>
+#include <cmath>
 #include <numeric>
 
 using namespace LAMMPS_NS;
 
 static constexpr int GRAIN_WORDS = 4;      // tag, mass, radius, marked
 static constexpr int CONTACT_WORDS = 9;    // tag_i, tag_j, n[3], kn, kt, cn, ct
+
+/* ---------------------------------------------------------------------- */
+
+double VibrationNetworkSettings::finite_number(const char *word, const std::string &command,
+                                               const std::string &what, LAMMPS *lmp)
+{
+  const double value = utils::numeric(FLERR, word, false, lmp);
+  if (!std::isfinite(value))
+    lmp->error->all(FLERR, "Illegal {} command: {} must be a finite number, got {}", command, what,
+                    word);
+  return value;
+}
 
 /* ---------------------------------------------------------------------- */
 
@@ -56,8 +68,8 @@ int VibrationNetworkSettings::parse(int iarg, int narg, char **arg, const std::s
     if (which == "hertz") {
       need(3);
       stiffness = HERTZ;
-      youngs_modulus = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-      poisson_ratio = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+      youngs_modulus = finite_number(arg[iarg + 2], command, "Young's modulus E", lmp);
+      poisson_ratio = finite_number(arg[iarg + 3], command, "Poisson ratio nu", lmp);
       if (youngs_modulus <= 0.0)
         error->all(FLERR, "Illegal {} command: stiffness hertz needs Young's modulus E > 0, got {}",
                    command, youngs_modulus);
@@ -71,14 +83,14 @@ int VibrationNetworkSettings::parse(int iarg, int narg, char **arg, const std::s
   }
   if (key == "kappa_scale") {
     need(1);
-    kappa_scale = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    kappa_scale = finite_number(arg[iarg + 1], command, "kappa_scale", lmp);
     if (kappa_scale <= 0.0)
       error->all(FLERR, "Illegal {} command: kappa_scale must be > 0, got {}", command, kappa_scale);
     return 2;
   }
   if (key == "ratio") {
     need(1);
-    ratio = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    ratio = finite_number(arg[iarg + 1], command, "ratio", lmp);
     if (ratio < 0.0)
       error->all(FLERR, "Illegal {} command: ratio k_t/k_n must be >= 0, got {}", command, ratio);
     return 2;
@@ -94,7 +106,7 @@ int VibrationNetworkSettings::parse(int iarg, int narg, char **arg, const std::s
   }
   if (key == "damping" && allow_damping) {
     need(1);
-    damping_ratio = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    damping_ratio = finite_number(arg[iarg + 1], command, "damping ratio", lmp);
     if (damping_ratio < 0.0)
       error->all(FLERR, "Illegal {} command: damping ratio must be >= 0, got {}", command,
                  damping_ratio);
@@ -126,7 +138,60 @@ int VibrationNetwork::dofs_per_grain() const
 }
 
 /* ----------------------------------------------------------------------
-   walk the contacts, gather grains and contacts to rank 0, build the network
+   collect, gather, index, assemble
+------------------------------------------------------------------------- */
+
+void VibrationNetwork::build(int groupbit, int marker_groupbit)
+{
+  CollectiveError errors(lmp);
+  walker.collect(contacts, groupbit, errors);
+  const std::vector<double> contact_words = pack_contacts(errors);
+  const std::vector<double> grain_words = pack_grains(groupbit, marker_groupbit, errors);
+  errors.raise(FLERR);
+
+  bigint counts_local[2] = {static_cast<bigint>(contact_words.size() / CONTACT_WORDS),
+                            static_cast<bigint>(grain_words.size() / GRAIN_WORDS)};
+  bigint counts_all[2];
+  MPI_Allreduce(counts_local, counts_all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  ncontacts_all = counts_all[0];
+  ngrains_all = counts_all[1];
+
+  std::vector<int> contact_counts, grain_counts;
+  const std::vector<double> all_contacts = gather_to_rank0(contact_words, contact_counts);
+  const std::vector<double> all_grains = gather_to_rank0(grain_words, grain_counts);
+
+  if (comm->me == 0) {
+    try {
+      std::vector<Acoustic::Grain> grains = index_grains(all_grains, grain_counts);
+      std::vector<Acoustic::Contact> network_contacts = index_contacts(all_contacts);
+      net.reset(new Acoustic::ContactNetwork(domain->dimension, settings.model, std::move(grains),
+                                             std::move(network_contacts)));
+    } catch (Acoustic::SolverError &e) {
+      errors.report(fmt::format("{}: cannot build the contact network: {}", command, e.what()));
+    }
+  }
+  errors.raise(FLERR);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void VibrationNetwork::collect(int groupbit)
+{
+  CollectiveError errors(lmp);
+  walker.collect(contacts, groupbit, errors);
+  for (auto &c : contacts) {
+    try {
+      apply_settings(c);
+    } catch (Acoustic::SolverError &e) {
+      errors.report(fmt::format("{}: contact of atoms {} and {}: {}", command, atom->tag[c.i],
+                                atom->tag[c.j], e.what()));
+    }
+  }
+  errors.raise(FLERR);
+}
+
+/* ----------------------------------------------------------------------
+   stiffnesses of the network from the settings (the walker gives the pair's)
 ------------------------------------------------------------------------- */
 
 void VibrationNetwork::apply_settings(GranularContact &c) const
@@ -142,107 +207,139 @@ void VibrationNetwork::apply_settings(GranularContact &c) const
   if (ratio >= 0.0) c.kt = ratio * c.kn;
 }
 
-void VibrationNetwork::build(int groupbit, int marker_groupbit)
-{
-  walker.collect(contacts, groupbit);
+/* ----------------------------------------------------------------------
+   contacts this processor counts, oriented from the lower to the higher
+   atom ID, so that the network is the same on any number of processors
+------------------------------------------------------------------------- */
 
+std::vector<double> VibrationNetwork::pack_contacts(CollectiveError &errors)
+{
   tagint *tag = atom->tag;
   double *rmass = atom->rmass;
-  double *radius = atom->radius;
-  int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
-
-  // contacts with the stiffnesses of the network
-  std::vector<double> csend;
-  csend.reserve(contacts.size() * CONTACT_WORDS);
+  std::vector<double> words;
+  words.reserve(contacts.size() * CONTACT_WORDS);
   for (auto &c : contacts) {
+    double cn = 0.0, ct = 0.0;
     try {
       apply_settings(c);
+      if (c.owned && c.kn > 0.0 && settings.damping_ratio > 0.0) {
+        cn = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kn, rmass[c.i], rmass[c.j]);
+        ct = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kt, rmass[c.i], rmass[c.j]);
+      }
     } catch (Acoustic::SolverError &e) {
-      error->one(FLERR, "{}: contact of atoms {} and {}: {}", command, tag[c.i], tag[c.j], e.what());
+      errors.report(fmt::format("{}: contact of atoms {} and {}: {}", command, tag[c.i], tag[c.j],
+                                e.what()));
+      continue;
+    }
+    if (!(std::isfinite(c.kn) && std::isfinite(c.kt) && std::isfinite(cn) && std::isfinite(ct))) {
+      errors.report(fmt::format("{}: contact of atoms {} and {} has a non-finite stiffness "
+                                "(k_n = {}, k_t = {}) or dashpot; check the contact model's "
+                                "coefficients and the keywords stiffness, kappa_scale, ratio, "
+                                "damping", command, tag[c.i], tag[c.j], c.kn, c.kt));
+      continue;
     }
 
     // open or tensile contacts carry no stiffness and stay out of the network
     if (!c.owned || !(c.kn > 0.0)) continue;
-    double cn = 0.0, ct = 0.0;
-    if (settings.damping_ratio > 0.0) {
-      cn = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kn, rmass[c.i], rmass[c.j]);
-      ct = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kt, rmass[c.i], rmass[c.j]);
-    }
-    // orient every contact from the lower to the higher atom ID: the network
-    // is then the same whatever the number of processors
     const bool flip = tag[c.i] > tag[c.j];
     const double sign = flip ? -1.0 : 1.0;
-    csend.push_back(static_cast<double>(flip ? tag[c.j] : tag[c.i]));
-    csend.push_back(static_cast<double>(flip ? tag[c.i] : tag[c.j]));
-    for (int k = 0; k < 3; k++) csend.push_back(sign * c.n[k]);
-    csend.push_back(c.kn);
-    csend.push_back(c.kt);
-    csend.push_back(cn);
-    csend.push_back(ct);
+    words.push_back(static_cast<double>(flip ? tag[c.j] : tag[c.i]));
+    words.push_back(static_cast<double>(flip ? tag[c.i] : tag[c.j]));
+    for (int k = 0; k < 3; k++) words.push_back(sign * c.n[k]);
+    words.push_back(c.kn);
+    words.push_back(c.kt);
+    words.push_back(cn);
+    words.push_back(ct);
   }
+  return words;
+}
 
-  // owned grains of the group
-  std::vector<double> gsend;
-  for (int i = 0; i < nlocal; i++) {
+/* ----------------------------------------------------------------------
+   owned grains of the group: ID, mass, radius, marked
+------------------------------------------------------------------------- */
+
+std::vector<double> VibrationNetwork::pack_grains(int groupbit, int marker_groupbit,
+                                                  CollectiveError &errors)
+{
+  tagint *tag = atom->tag;
+  double *rmass = atom->rmass;
+  double *radius = atom->radius;
+  int *mask = atom->mask;
+  std::vector<double> words;
+  for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    gsend.push_back(static_cast<double>(tag[i]));
-    gsend.push_back(rmass[i]);
-    gsend.push_back(radius[i]);
-    gsend.push_back((mask[i] & marker_groupbit) ? 1.0 : 0.0);
+    if (!(std::isfinite(rmass[i]) && rmass[i] > 0.0 && std::isfinite(radius[i]) &&
+          radius[i] > 0.0))
+      errors.report(fmt::format("{}: atom {} has mass {} and radius {}; every atom of the network "
+                                "needs a positive, finite mass and radius (set density, diameter)",
+                                command, tag[i], rmass[i], radius[i]));
+    words.push_back(static_cast<double>(tag[i]));
+    words.push_back(rmass[i]);
+    words.push_back(radius[i]);
+    words.push_back((mask[i] & marker_groupbit) ? 1.0 : 0.0);
   }
+  return words;
+}
 
-  // gather to rank 0
+/* ----------------------------------------------------------------------
+   the concatenation of every processor's words on rank 0, in rank order;
+   counts[p] = number of words from processor p (rank 0)
+------------------------------------------------------------------------- */
+
+std::vector<double> VibrationNetwork::gather_to_rank0(const std::vector<double> &mine,
+                                                      std::vector<int> &counts)
+{
   const int nprocs = comm->nprocs;
-  const int me = comm->me;
-  int counts[2] = {static_cast<int>(gsend.size()), static_cast<int>(csend.size())};
-  std::vector<int> gcounts(nprocs), ccounts(nprocs), gdispl(nprocs, 0), cdispl(nprocs, 0);
-  MPI_Gather(&counts[0], 1, MPI_INT, gcounts.data(), 1, MPI_INT, 0, world);
-  MPI_Gather(&counts[1], 1, MPI_INT, ccounts.data(), 1, MPI_INT, 0, world);
-  std::vector<double> gall, call;
-  if (me == 0) {
-    for (int p = 1; p < nprocs; p++) {
-      gdispl[p] = gdispl[p - 1] + gcounts[p - 1];
-      cdispl[p] = cdispl[p - 1] + ccounts[p - 1];
-    }
-    gall.resize(gdispl[nprocs - 1] + gcounts[nprocs - 1]);
-    call.resize(cdispl[nprocs - 1] + ccounts[nprocs - 1]);
-  }
-  MPI_Gatherv(gsend.data(), counts[0], MPI_DOUBLE, gall.data(), gcounts.data(), gdispl.data(),
-              MPI_DOUBLE, 0, world);
-  MPI_Gatherv(csend.data(), counts[1], MPI_DOUBLE, call.data(), ccounts.data(), cdispl.data(),
-              MPI_DOUBLE, 0, world);
+  int count = static_cast<int>(mine.size());
+  counts.assign(nprocs, 0);
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+  std::vector<int> displs(nprocs, 0);
+  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  std::vector<double> all;
+  if (comm->me == 0) all.resize(displs[nprocs - 1] + counts[nprocs - 1]);
+  MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
+              0, world);
+  return all;
+}
 
-  bigint nc_local = static_cast<bigint>(csend.size() / CONTACT_WORDS);
-  bigint ng_local = static_cast<bigint>(gsend.size() / GRAIN_WORDS);
-  MPI_Allreduce(&nc_local, &ncontacts_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  MPI_Allreduce(&ng_local, &ngrains_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+/* ----------------------------------------------------------------------
+   rank 0: grains sorted by atom ID, remembering the order they were sent in
+------------------------------------------------------------------------- */
 
-  if (me != 0) return;
-
-  // rank 0: grains sorted by atom ID, remembering the order they were sent in
-  const int ngrains = static_cast<int>(gall.size() / GRAIN_WORDS);
+std::vector<Acoustic::Grain> VibrationNetwork::index_grains(const std::vector<double> &words,
+                                                            const std::vector<int> &counts)
+{
+  const int ngrains = static_cast<int>(words.size() / GRAIN_WORDS);
   std::vector<int> order(ngrains);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return gall[GRAIN_WORDS * a] < gall[GRAIN_WORDS * b]; });
+            [&](int a, int b) { return words[GRAIN_WORDS * a] < words[GRAIN_WORDS * b]; });
   tags_all.resize(ngrains);
   sent_grain_index.assign(ngrains, 0);
   marked.clear();
   std::vector<Acoustic::Grain> grains(ngrains);
   for (int g = 0; g < ngrains; g++) {
-    const double *w = &gall[GRAIN_WORDS * order[g]];
+    const double *w = &words[GRAIN_WORDS * order[g]];
     tags_all[g] = static_cast<tagint>(w[0]);
     grains[g].mass = w[1];
     grains[g].radius = w[2];
     if (w[3] != 0.0) marked.push_back(g);
     sent_grain_index[order[g]] = g;
   }
-  sent_counts.resize(nprocs);
-  for (int p = 0; p < nprocs; p++) sent_counts[p] = gcounts[p] / GRAIN_WORDS;
+  sent_counts.resize(counts.size());
+  for (std::size_t p = 0; p < counts.size(); p++) sent_counts[p] = counts[p] / GRAIN_WORDS;
+  return grains;
+}
 
-  // grain index of an atom ID (IDs are at most the number of atoms in most
-  // systems: a table; sparse IDs: a binary search in the sorted IDs)
+/* ----------------------------------------------------------------------
+   rank 0: contacts between grain indices, sorted
+------------------------------------------------------------------------- */
+
+std::vector<Acoustic::Contact> VibrationNetwork::index_contacts(const std::vector<double> &words) const
+{
+  // grain index of an atom ID: a table when IDs are at most a few times the
+  // number of grains, a binary search in the sorted IDs otherwise
+  const int ngrains = static_cast<int>(tags_all.size());
   std::vector<int> index_by_tag;
   const tagint max_tag = ngrains ? tags_all.back() : 0;
   if (max_tag <= 4 * static_cast<tagint>(ngrains) + 1024) {
@@ -255,11 +352,11 @@ void VibrationNetwork::build(int groupbit, int marker_groupbit)
     auto it = std::lower_bound(tags_all.begin(), tags_all.end(), id);
     return static_cast<int>(it - tags_all.begin());
   };
-  const int ncontacts = static_cast<int>(call.size() / CONTACT_WORDS);
-  std::vector<Acoustic::Contact> network_contacts(ncontacts);
+  const int ncontacts = static_cast<int>(words.size() / CONTACT_WORDS);
+  std::vector<Acoustic::Contact> result(ncontacts);
   for (int k = 0; k < ncontacts; k++) {
-    const double *w = &call[CONTACT_WORDS * k];
-    Acoustic::Contact &c = network_contacts[k];
+    const double *w = &words[CONTACT_WORDS * k];
+    Acoustic::Contact &c = result[k];
     c.i = index_of(w[0]);
     c.j = index_of(w[1]);
     c.normal = Eigen::Vector3d(w[2], w[3], w[4]);
@@ -268,16 +365,10 @@ void VibrationNetwork::build(int groupbit, int marker_groupbit)
     c.cn = w[7];
     c.ct = w[8];
   }
-  std::sort(network_contacts.begin(), network_contacts.end(),
-            [](const Acoustic::Contact &a, const Acoustic::Contact &b) {
-              return (a.i < b.i) || (a.i == b.i && a.j < b.j);
-            });
-  try {
-    net.reset(new Acoustic::ContactNetwork(domain->dimension, settings.model, std::move(grains),
-                                           std::move(network_contacts)));
-  } catch (Acoustic::SolverError &e) {
-    error->one(FLERR, "{}: cannot build the contact network: {}", command, e.what());
-  }
+  std::sort(result.begin(), result.end(), [](const Acoustic::Contact &a, const Acoustic::Contact &b) {
+    return (a.i < b.i) || (a.i == b.i && a.j < b.j);
+  });
+  return result;
 }
 
 /* ----------------------------------------------------------------------

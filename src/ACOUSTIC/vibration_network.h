@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
    https://www.lammps.org/, Sandia National Laboratories
-   Steve Plimpton, sjplimp@sandia.gov
+   LAMMPS development team: developers@lammps.org
 
    Copyright (2003) Sandia Corporation.  Under the terms of Contract
    DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
@@ -14,10 +14,10 @@
 /* ----------------------------------------------------------------------
    The contact network of the current packing, as fix acoustic/mindlin and
    compute vibration/modes see it: the contacts of pair granular (read by
-   GranularContactWalker) between atoms of a group, with stiffnesses (and dashpots) from the
-   settings shared by both commands, gathered to rank 0 as an
-   Acoustic::ContactNetwork keyed by atom IDs; and per-grain values sent
-   back from rank 0 to the atoms' owners.
+   GranularContactWalker) between atoms of a group, with stiffnesses (and
+   dashpots) from the settings shared by both commands, gathered to rank 0
+   as an Acoustic::ContactNetwork keyed by atom IDs; and per-grain values
+   sent back from rank 0 to the atoms' owners.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_VIBRATION_NETWORK_H
@@ -47,6 +47,11 @@ struct VibrationNetworkSettings {
   // 0 if arg[iarg] is not a network keyword; errors name `command`
   int parse(int iarg, int narg, char **arg, const std::string &command, class LAMMPS *lmp,
             bool allow_damping);
+
+  // the number in `word`, value of `what` in `command`: an ERROR unless it is
+  // a finite number (utils::numeric lets 1e400 through as infinity)
+  static double finite_number(const char *word, const std::string &command,
+                              const std::string &what, class LAMMPS *lmp);
 };
 
 class VibrationNetwork : protected Pointers {
@@ -57,10 +62,15 @@ class VibrationNetwork : protected Pointers {
   // check the pair style and the atom style; call from init()
   void init();
 
-  // walk the contacts of the group, gather them to rank 0 and build the
-  // network there; marker_groupbit selects grains whose index lists
-  // marked_grains() returns on rank 0 (the source, or fixed atoms)
+  // collective: walk the contacts of the group, gather them to rank 0 and
+  // build the network there; marker_groupbit selects grains whose index lists
+  // marked_grains() returns on rank 0 (the source, or fixed atoms).  Bad
+  // contacts or atoms stop every rank with an ERROR.
   void build(int groupbit, int marker_groupbit);
+
+  // collective: only walk the contacts of the group (local_contacts()), without
+  // building the network
+  void collect(int groupbit);
 
   // the contacts listed on this processor (both atoms in the group), with
   // kn and kt replaced by the stiffnesses of the network (from the settings)
@@ -96,7 +106,14 @@ class VibrationNetwork : protected Pointers {
   std::vector<int> sent_counts;
   std::vector<int> sent_grain_index;
 
+  // the steps of build()
   void apply_settings(GranularContact &c) const;
+  std::vector<double> pack_contacts(class CollectiveError &errors);
+  std::vector<double> pack_grains(int groupbit, int marker_groupbit, class CollectiveError &errors);
+  std::vector<double> gather_to_rank0(const std::vector<double> &mine, std::vector<int> &counts);
+  std::vector<Acoustic::Grain> index_grains(const std::vector<double> &words,
+                                            const std::vector<int> &counts);
+  std::vector<Acoustic::Contact> index_contacts(const std::vector<double> &words) const;
 };
 
 }    // namespace LAMMPS_NS

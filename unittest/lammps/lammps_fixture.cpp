@@ -2,6 +2,7 @@
 
 #include "atom.h"
 #include "force.h"
+#include "collective_error.h"
 #include "granular_contact_walker.h"
 #include "input.h"
 #include "library.h"
@@ -73,7 +74,9 @@ std::vector<LAMMPS_NS::GranularContact> granular_contacts(LammpsInstance &L)
   LAMMPS_NS::GranularContactWalker walker(L.lmp, "test");
   walker.init();
   std::vector<LAMMPS_NS::GranularContact> contacts;
-  walker.collect(contacts, 1);    // group all
+  LAMMPS_NS::CollectiveError errors(L.lmp);
+  walker.collect(contacts, 1, errors);    // group all
+  errors.raise(FLERR);
   return contacts;
 }
 

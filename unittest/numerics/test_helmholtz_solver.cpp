@@ -295,6 +295,16 @@ TEST(HelmholtzSolver, RejectsInvalidInput)
   EXPECT_THROW(solver.solve(k, c, m, 1.0, {0}, source.values), SolverError);
   EXPECT_THROW(solver.solve(k, c, Eigen::VectorXd::Zero(m.size()), 1.0, source.dofs, source.values), SolverError);
   EXPECT_THROW(HelmholtzSolver(LinearSolverChoice::Auto, 0.0), SolverError);
+  // omega^2 m beyond the range of doubles: a clear refusal, not a "resonance"
+  try {
+    solver.solve(k, Eigen::SparseMatrix<double>(), m, 2.0 * M_PI * 1e200, source.dofs, source.values);
+    FAIL() << "omega = 2 pi 1e200 accepted";
+  } catch (const SolverError &e) {
+    EXPECT_NE(std::string(e.what()).find("the frequency is out of range for this network"),
+              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("omega = 6.28319e+200"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(solver.solve(k, c, m, 1e200, source.dofs, source.values), SolverError);
   EXPECT_EQ(linear_solver_from_name("ldlt"), LinearSolverChoice::Ldlt);
   EXPECT_EQ(linear_solver_from_name("mumps"), LinearSolverChoice::Mumps);
   try {

@@ -109,6 +109,32 @@ TEST(MindlinLaw, FactorIsClampedAndOneWithoutLoad)
   EXPECT_THROW(friction_factor(MindlinFrictionLaw(), 10.0, 1.0, 0.5, std::nan("")), SolverError);
 }
 
+TEST(MindlinLaw, AmplitudesBeyondTheRangeOfDoubles)
+{
+  // U_t = +inf or products that overflow: the smallest factor, never NaN
+  MindlinFrictionLaw law;
+  law.mu_min = 0.25;
+  EXPECT_EQ(friction_factor(law, 10.0, inf, 0.5, 2.0), 0.25);
+  EXPECT_EQ(friction_factor(law, 1e300, 1e300, 0.5, 2.0), 0.25);
+  law.cmu = 1e300;
+  EXPECT_EQ(friction_factor(law, 1e10, 1e10, 0.5, 2.0), 0.25);
+  // a tiny product that does not overflow is still exact
+  EXPECT_DOUBLE_EQ(friction_factor(law, 1e-300, 1e-10, 0.5, 2.0), 1.0 - 1e300 * 1e-300 * 1e-10);
+  // both products overflow (mu f_n too): the ratio from logarithms,
+  // 1e300 * 5e299 / (1e300 * 1e300) = 0.5
+  law.cmu = 1.0;
+  law.mu_min = 0.0;
+  EXPECT_NEAR(friction_factor(law, 1e300, 5e299, 1e300, 1e300), 0.5, 1e-12);
+  // no tangential spring, or C_mu = 0: no reduction, even for an infinite amplitude
+  EXPECT_EQ(friction_factor(law, 0.0, inf, 0.5, 2.0), 1.0);
+  law.cmu = 0.0;
+  EXPECT_EQ(friction_factor(law, 10.0, inf, 0.5, 2.0), 1.0);
+  EXPECT_THROW(friction_factor(MindlinFrictionLaw(), 10.0, std::nan(""), 0.5, 2.0), SolverError);
+  // U0 |P dq| overflowing is +inf, not an error
+  EXPECT_EQ(tangential_amplitude(Eigen::Vector3cd(1e200, 0.0, 0.0), Eigen::Vector3d(0.0, 1.0, 0.0), 1e200),
+            inf);
+}
+
 TEST(Dashpot, EffectiveMassAndCoefficient)
 {
   EXPECT_DOUBLE_EQ(effective_mass(2.0, 3.0), 1.2);

@@ -1,0 +1,201 @@
+"""Every bad input to the package's commands stops a batch run (lmp -in deck)
+with an ERROR line that names the problem, on screen and in the log file, on 1
+and on 2 MPI ranks; numbers of absurd size are refused or handled, never a
+crash.  Each case is a real LAMMPS run of the executable built here."""
+import os
+import subprocess
+
+import pytest
+
+LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
+
+# a 2D hexagonal layer of equal grains in contact on a row of base grains
+LAYER = """
+units lj
+dimension 2
+atom_style sphere
+boundary p fm p
+comm_modify vel yes
+processors * 1 1
+lattice hex 1.1547005383792517
+region box block 0 10 0 5 -0.5 0.5
+create_box 2 box
+region base block INF INF -0.1 0.1 INF INF units box
+region layer block INF INF 0.5 4.3 INF INF units box
+create_atoms 2 region base
+create_atoms 1 region layer
+group base type 2
+group grains type 1
+group empty type 3
+set group all diameter 1.002
+set group all density 1.0
+pair_style granular
+pair_coeff * * hooke 1e4 0 tangential linear_history/acoustic 8e3 0 0.5
+fix plane all enforce2d
+thermo 0
+"""
+
+FIX = "fix ac all acoustic/mindlin 10 frequency 0.5 amplitude 1e-3 source base"
+COMPUTE = "compute m all vibration/modes fixed base"
+
+# (name, lines after LAYER, expected part of the ERROR message)
+BAD_INPUTS = [
+    # fix acoustic/mindlin: arguments
+    ("fix_too_few_args", "fix ac all acoustic/mindlin 10 frequency 5",
+     "expected fix ID group-ID acoustic/mindlin N"),
+    ("fix_bad_every", "fix ac all acoustic/mindlin 0 frequency 5 amplitude 1e-3 source base",
+     "N must be > 0"),
+    ("fix_misspelt_frequency", "fix ac all acoustic/mindlin 10 freq 5 amplitude 1e-3 source base",
+     "expected 'frequency' as argument 5, got 'freq'"),
+    ("fix_negative_frequency", "fix ac all acoustic/mindlin 10 frequency -5 amplitude 1e-3 source base",
+     "frequency must be >= 0"),
+    ("fix_infinite_frequency", "fix ac all acoustic/mindlin 10 frequency 1e400 amplitude 1e-3 source base",
+     "Floating point number 1e400 in input script or data file is out of range"),
+    ("fix_frequency_not_a_number", "fix ac all acoustic/mindlin 10 frequency fast amplitude 1e-3 source base",
+     "Expected floating point parameter instead of 'fast'"),
+    ("fix_negative_amplitude", "fix ac all acoustic/mindlin 10 frequency 5 amplitude -1e-3 source base",
+     "amplitude must be >= 0"),
+    ("fix_infinite_amplitude", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e400 source base",
+     "Floating point number 1e400 in input script or data file is out of range"),
+    ("fix_missing_source_group", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source floor",
+     "source group floor does not exist"),
+    ("fix_unknown_keyword", FIX + " loudness 3", "unknown keyword loudness"),
+    ("fix_keyword_without_value", FIX + " cmu", "keyword cmu needs 1 value(s)"),
+    ("fix_zero_direction", FIX + " direction 0 0 0", "direction must not be the zero vector"),
+    ("fix_infinite_direction", FIX + " direction 1e400 0 0",
+     "Floating point number 1e400 in input script or data file is out of range"),
+    ("fix_direction_out_of_plane", FIX + " direction 0 1 1", "in 2D the direction must lie in the xy plane"),
+    ("fix_bad_mode", FIX + " mode sideways", "mode must be 'all' or 'normal', got 'sideways'"),
+    ("fix_mode_normal_oblique", FIX + " mode normal direction 1 1 0",
+     "mode normal prescribes one Cartesian component"),
+    ("fix_bad_stiffness", FIX + " stiffness spring", "stiffness must be 'pair' or 'hertz E nu'"),
+    ("fix_stiffness_hertz_negative_E", FIX + " stiffness hertz -1 0.3", "needs Young's modulus E > 0"),
+    ("fix_stiffness_hertz_bad_nu", FIX + " stiffness hertz 1e9 0.7", "needs -1 < nu < 0.5"),
+    ("fix_stiffness_hertz_infinite_E", FIX + " stiffness hertz 1e400 0.3",
+     "Floating point number 1e400 in input script or data file is out of range"),
+    ("fix_kappa_scale_zero", FIX + " kappa_scale 0", "kappa_scale must be > 0"),
+    ("fix_kappa_scale_infinite", FIX + " kappa_scale 1e400", "Floating point number 1e400 in input script or data file is out of range"),
+    ("fix_negative_ratio", FIX + " ratio -1", "ratio k_t/k_n must be >= 0"),
+    ("fix_infinite_ratio", FIX + " ratio 1e400", "Floating point number 1e400 in input script or data file is out of range"),
+    ("fix_negative_cmu", FIX + " cmu -1", "cmu must be >= 0"),
+    ("fix_infinite_cmu", FIX + " cmu 1e400", "Floating point number 1e400 in input script or data file is out of range"),
+    ("fix_bad_mu_min", FIX + " mu_min 1.5", "mu_min must be in [0, 1]"),
+    ("fix_bad_model", FIX + " model rigid", "unknown contact model 'rigid'"),
+    ("fix_negative_damping", FIX + " damping -0.1", "damping ratio must be >= 0"),
+    ("fix_infinite_damping", FIX + " damping 1e400", "Floating point number 1e400 in input script or data file is out of range"),
+    ("fix_unknown_solver", FIX + " solver magic", "unknown linear solver 'magic'"),
+    ("fix_ldlt_with_damping", FIX + " damping 0.1 solver ldlt", "solver ldlt handles undamped"),
+    ("fix_bad_reuse", FIX + " reuse maybe", "Expected boolean parameter instead of 'maybe'"),
+    # fix acoustic/mindlin: the system
+    ("fix_empty_source", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source empty\nrun 0",
+     "source group empty has no atom in the fix group all"),
+    ("fix_source_outside_group",
+     "fix ac grains acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base\nrun 0",
+     "source group base has no atom in the fix group grains"),
+    ("fix_source_partly_outside",
+     "group halfbase id <= 5\ngroup sheet union grains halfbase\n"
+     "fix ac sheet acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base\nrun 0",
+     "atoms of the source group base are not in the fix group sheet"),
+    ("fix_absurd_frequency", "fix ac all acoustic/mindlin 10 frequency 1e200 amplitude 1e-3 source base\nrun 0",
+     "the frequency is out of range for this network"),
+    ("fix_two_fixes", FIX + "\nfix ac2 grains acoustic/mindlin 10 frequency 1 amplitude 1e-3 source base\nrun 0",
+     "would overwrite each other's friction factors"),
+    ("fix_tangential_without_factor",
+     "pair_coeff * * hooke 1e4 0 tangential linear_history 8e3 0 0.5\n" + FIX + "\nrun 0",
+     "use tangential linear_history/acoustic in pair_coeff"),
+    ("fix_not_pair_granular",
+     "pair_style gran/hooke/history 1000 NULL 0.5 NULL 0.5 1\npair_coeff * *\n" + FIX + "\nrun 0",
+     "requires pair_style granular with a tangential <model>/acoustic sub-model"),
+    ("fix_coincident_atoms", "create_atoms 1 single 2 2 0 units box\ncreate_atoms 1 single 2 2 0 units box\n"
+     "set group all diameter 1.002\nset group all density 1.0\n" + FIX + "\nrun 0",
+     "are at the same position: their contact has no normal"),
+    # compute vibration/modes
+    ("compute_unknown_keyword", COMPUTE + " loudness 3", "unknown keyword loudness"),
+    ("compute_bad_method", COMPUTE + " method magic", "magic"),
+    ("compute_nmodes_without_lanczos", COMPUTE + " nmodes 4", "nmodes applies to method lanczos only"),
+    ("compute_zero_nmodes", COMPUTE + " method lanczos nmodes 0", "nmodes must be > 0"),
+    ("compute_zero_mode", COMPUTE + " mode 0", "mode must be >= 1"),
+    ("compute_too_many_bins", COMPUTE + " bins 2000000000 0 10",
+     "2000000000 bins is more than the 1000000 a histogram may have"),
+    ("compute_infinite_fmax", COMPUTE + " bins 10 0 1e400", "Floating point number 1e400 in input script or data file is out of range"),
+    ("compute_bad_range", COMPUTE + " bins 10 5 1", "need 0 <= fmin < fmax"),
+    ("compute_kpm_without_bins", COMPUTE + " method kpm", "give its range with bins Nb fmin fmax"),
+    ("compute_few_moments", COMPUTE + " method kpm bins 10 0 10 moments 1", "moments must be >= 2"),
+    ("compute_damping", COMPUTE + " damping 0.1", "keyword damping does not apply"),
+    ("compute_missing_fixed_group", "compute m all vibration/modes fixed floor",
+     "fixed group floor does not exist"),
+    ("compute_fixed_partly_outside",
+     "group halfbase id <= 5\ngroup sheet union grains halfbase\n"
+     "compute m sheet vibration/modes fixed base\nthermo_style custom step c_m\nrun 0",
+     "atoms of the fixed group base are not in the compute group sheet"),
+    ("compute_everything_fixed",
+     "compute m base vibration/modes fixed base\nthermo_style custom step c_m\nrun 0",
+     "no degree of freedom is left"),
+    ("compute_mode_beyond_the_modes",
+     "group one id 1:12\ncompute m one vibration/modes mode 300\n"
+     "dump d all custom 1 shape.dump id c_m[1]\nrun 0",
+     "mode 300 is out of range"),
+    ("compute_tangential_without_factor",
+     "pair_coeff * * hooke 1e4 0 tangential linear_history 8e3 0 0.5\n" + COMPUTE +
+     "\nthermo_style custom step c_m\nrun 0",
+     "use tangential linear_history/acoustic in pair_coeff"),
+]
+
+
+def run_batch(tmp_path, deck, ranks):
+    """lmp -in deck -log log.lammps on `ranks` MPI ranks; (returncode, screen, log)"""
+    (tmp_path / "in.deck").write_text(LAYER + deck + "\n")
+    command = [LMP, "-in", "in.deck", "-log", "log.lammps", "-nocite"]
+    if ranks > 1:
+        command = ["mpirun", "-np", str(ranks), "--oversubscribe"] + command
+    done = subprocess.run(command, cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    log = tmp_path / "log.lammps"
+    return done.returncode, done.stdout + done.stderr, log.read_text() if log.exists() else ""
+
+
+@pytest.mark.parametrize("ranks", [1, 2])
+@pytest.mark.parametrize("name,deck,message", BAD_INPUTS, ids=[case[0] for case in BAD_INPUTS])
+def test_error_reaches_the_log(tmp_path, name, deck, message, ranks):
+    returncode, screen, log = run_batch(tmp_path, deck, ranks)
+    assert returncode != 0, f"{name}: the run did not fail\n{screen}"
+    error_lines = [line for line in log.splitlines() if line.startswith("ERROR")]
+    assert error_lines, f"{name}: no ERROR line in the log file\nscreen:\n{screen}\nlog:\n{log}"
+    assert message in error_lines[0], f"{name}: {error_lines[0]!r} does not say {message!r}"
+    assert message in screen
+    assert "MPI_ABORT" not in screen and "Signal" not in screen, screen
+
+
+def factors_line(log):
+    """the last thermo line: step, contacts, mean, min, weak fraction"""
+    rows = [line.split() for line in log.splitlines()]
+    rows = [r for r in rows if len(r) == 5 and r[0].isdigit()]
+    return [float(v) for v in rows[-1]]
+
+
+@pytest.mark.parametrize("ranks", [1, 2])
+def test_huge_and_tiny_directions_are_the_diagonal(tmp_path, ranks):
+    """direction 1e200 1e200 0 and 1e-200 1e-200 0 are the direction 1 1 0"""
+    results = []
+    for direction in ["1 1 0", "1e200 1e200 0", "1e-200 1e-200 0"]:
+        deck = (FIX + f" direction {direction} solver lu\n"
+                "thermo_style custom step f_ac[1] f_ac[2] f_ac[3] f_ac[4]\n"
+                "thermo_modify format float %.15g\nrun 0")
+        returncode, screen, log = run_batch(tmp_path, deck, ranks)
+        assert returncode == 0, screen
+        results.append(factors_line(log))
+    assert results[0][2] < 1.0, "no friction reduction: the comparison would be empty"
+    assert results[1] == results[0]
+    assert results[2] == results[0]
+
+
+@pytest.mark.parametrize("ranks", [1, 2])
+def test_huge_amplitude_gives_the_smallest_factor(tmp_path, ranks):
+    """U0 = 1e300: the tangential amplitudes overflow; the factors go to mu_min, no NaN"""
+    deck = (FIX.replace("amplitude 1e-3", "amplitude 1e300") + " mu_min 0.2 cmu 1e300\n"
+            "thermo_style custom step f_ac[1] f_ac[2] f_ac[3] f_ac[4]\nrun 0")
+    returncode, screen, log = run_batch(tmp_path, deck, ranks)
+    assert returncode == 0, screen
+    step, contacts, mean, minimum, weak = factors_line(log)
+    assert contacts > 50
+    assert minimum == pytest.approx(0.2)
+    assert 0.2 <= mean < 1.0
