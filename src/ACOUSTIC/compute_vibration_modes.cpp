@@ -242,7 +242,10 @@ std::string ComputeVibrationModes::solve_on_rank0(bool with_shapes)
   try {
     const Acoustic::ContactNetwork &net = network->network();
     std::vector<int> fixed_dofs;
-    for (int g : network->marked_grains())
+    // the fixed atoms and the wall planes are clamped
+    for (int g : network->marked_grains(0))
+      for (int k = 0; k < ndof; k++) fixed_dofs.push_back(net.dof(g, k));
+    for (int g : network->wall_nodes())
       for (int k = 0; k < ndof; k++) fixed_dofs.push_back(net.dof(g, k));
     const Acoustic::DynamicalMatrix dynamical(net.stiffness_matrix(), net.mass_diagonal(),
                                               fixed_dofs, ndof);
@@ -308,7 +311,7 @@ void ComputeVibrationModes::solve(bool need_shapes)
   if (solved_step == update->ntimestep && (solved_with_shapes || !need_shapes)) return;
   const bool with_shapes = need_shapes || selected_mode > 0;
 
-  network->build(groupbit, fixed_groupbit);
+  network->build(groupbit, {fixed_groupbit});
   std::string failure;
   if (comm->me == 0) failure = solve_on_rank0(with_shapes);
   int length = static_cast<int>(failure.size());

@@ -50,7 +50,7 @@ static const char CMD[] = "fix acoustic/mindlin";
 /* ---------------------------------------------------------------------- */
 
 FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), source_groupbit(0), direction_axis(-1), source_mode(ALL),
+    Fix(lmp, narg, arg), source_groupbit(0), source_wall(-1), direction_axis(-1), source_mode(ALL),
     solver_choice(Acoustic::LinearSolverChoice::Auto), reuse(false), ndof(0), damped(0), last_update(-1),
     atoms_at_end(0), q_atom(nullptr), amplitude_atom(nullptr), contact_array(nullptr),
     ncontact_rows(0), maxcontact_rows(0)
@@ -77,15 +77,27 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Illegal {} command: amplitude must be >= 0 (distance units), got {}", CMD,
                amplitude);
   expect(8, "source");
-  source_group = arg[9];
-  if (group->find(source_group) < 0)
-    error->all(FLERR, "Illegal {} command: source group {} does not exist; define it with the "
-                      "group command first", CMD, source_group);
+  int iarg = 10;
+  if (strcmp(arg[9], "wall") == 0) {
+    if (narg < 11)
+      error->all(FLERR, "Illegal {} command: source wall needs the ID of a fix wall/gran", CMD);
+    source_wall_fix = arg[10];
+    Fix *wall = modify->get_fix_by_id(source_wall_fix);
+    if (!wall || !utils::strmatch(wall->style, "^wall/gran$"))
+      error->all(FLERR, "Illegal {} command: source wall {} is not a fix wall/gran; define the "
+                        "vibrating plane with fix wall/gran first", CMD, source_wall_fix);
+    iarg = 11;
+  } else {
+    source_group = arg[9];
+    if (group->find(source_group) < 0)
+      error->all(FLERR, "Illegal {} command: source group {} does not exist; define it with the "
+                        "group command first", CMD, source_group);
+  }
 
   const int dim = domain->dimension;
   direction[0] = direction[1] = direction[2] = 0.0;
   direction[dim == 3 ? 2 : 1] = 1.0;
-  parse_keywords(10, narg, arg);
+  parse_keywords(iarg, narg, arg);
   normalise_direction();
 
   damped = (settings.damping_ratio > 0.0);
@@ -249,6 +261,24 @@ int FixAcousticMindlin::setmask()
 void FixAcousticMindlin::init()
 {
   network->init();
+  init_source();
+  init_other_fixes();
+}
+
+/* ----------------------------------------------------------------------
+   the source: a wall plane in the network, or atoms all inside the fix group
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::init_source()
+{
+  if (!source_wall_fix.empty()) {
+    source_groupbit = 0;
+    source_wall = network->wall_of_fix(source_wall_fix);
+    if (source_wall < 0)
+      error->all(FLERR, "{}: source wall {} has no plane in the vibration network (it must be a "
+                        "fix wall/gran xplane, yplane or zplane)", CMD, source_wall_fix);
+    return;
+  }
   const int igroup_source = group->find(source_group);
   if (igroup_source < 0)
     error->all(FLERR, "{}: source group {} no longer exists", CMD, source_group);
@@ -269,8 +299,15 @@ void FixAcousticMindlin::init()
     error->all(FLERR, "{}: {} atoms of the source group {} are not in the fix group {}; the "
                       "source grains must all belong to the fix group", CMD, counts[1],
                source_group, group->names[igroup]);
+}
 
-  // one fix acoustic/mindlin per contact: the factors of two would overwrite each other
+/* ----------------------------------------------------------------------
+   one fix acoustic/mindlin per contact: the factors of two would overwrite
+   each other
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::init_other_fixes()
+{
   for (auto *other : modify->get_fix_by_style("^acoustic/mindlin$")) {
     if (other == this) continue;
     bigint common_local = 0, common = 0;
@@ -333,7 +370,16 @@ bool FixAcousticMindlin::solve_drive(std::string &failure)
   const int dim = domain->dimension;
   std::vector<int> prescribed;
   std::vector<std::complex<double>> values;
-  for (int g : network->marked_grains()) {
+  // the walls: the source plane moves with the drive, every other one is clamped
+  const std::vector<int> &walls = network->wall_nodes();
+  for (std::size_t k = 0; k < walls.size(); k++) {
+    const bool source = static_cast<int>(k) == source_wall;
+    for (int d = 0; d < ndof; d++) {
+      prescribed.push_back(net.dof(walls[k], d));
+      values.push_back((source && d < dim) ? direction[d] : 0.0);
+    }
+  }
+  for (int g : network->marked_grains(0)) {
     if (source_mode == ALL) {
       for (int k = 0; k < dim; k++) {
         prescribed.push_back(net.dof(g, k));
@@ -392,7 +438,7 @@ bool FixAcousticMindlin::solve_drive(std::string &failure)
 void FixAcousticMindlin::update_factors()
 {
   const double t0 = MPI_Wtime();
-  network->build(groupbit, source_groupbit);
+  network->build(groupbit, {source_groupbit});
   stats[TIME_GATHER] = MPI_Wtime() - t0;
   stats[TIME_ASSEMBLY] = stats[TIME_FACTORISATION] = stats[TIME_SOLVE] = stats[TIME_UPDATE] = 0.0;
   last_update = update->ntimestep;
@@ -476,12 +522,14 @@ void FixAcousticMindlin::set_factors()
     if (frequency > 0.0) {
       // evaluate every contact from its lower to its higher atom ID, so that the
       // two copies of a contact (newton off) get the same factor to the last bit
-      const bool flip = tag[c.i] > tag[c.j];
+      // a wall comes second, with its prescribed motion
+      const bool flip = (c.wall < 0) && tag[c.i] > tag[c.j];
       const int a = flip ? c.j : c.i, b = flip ? c.i : c.j;
       const double sign = flip ? -1.0 : 1.0;
       for (int k = 0; k < ndof; k++) {
         qi[k] = std::complex<double>(q_atom[a][2 * k], q_atom[a][2 * k + 1]);
-        qj[k] = std::complex<double>(q_atom[b][2 * k], q_atom[b][2 * k + 1]);
+        if (c.wall >= 0) qj[k] = (c.wall == source_wall && k < dim) ? direction[k] : 0.0;
+        else qj[k] = std::complex<double>(q_atom[b][2 * k], q_atom[b][2 * k + 1]);
       }
       const Eigen::Vector3d n(sign * c.n[0], sign * c.n[1], sign * c.n[2]);
       try {
@@ -495,11 +543,13 @@ void FixAcousticMindlin::set_factors()
         continue;    // the factor stays as it was
       }
     }
-    GranularContactWalker::set_friction_factor(c.factor, s);
+    // a wall contact whose tangential model has no /acoustic variant keeps its friction
+    if (c.factor) GranularContactWalker::set_friction_factor(c.factor, s);
+    else s = 1.0;
     if (!c.owned) continue;
     double *row = contact_array[ncontact_rows++];
     row[0] = static_cast<double>(tag[c.i]);
-    row[1] = static_cast<double>(tag[c.j]);
+    row[1] = (c.wall >= 0) ? 0.0 : static_cast<double>(tag[c.j]);
     row[2] = c.fn;
     row[3] = c.kn;
     row[4] = ut;
@@ -518,7 +568,7 @@ void FixAcousticMindlin::factor_statistics(const std::vector<GranularContact> &c
 {
   double sum = 0.0, minimum = 1.0, nweak = 0.0, ncounted = 0.0;
   for (const auto &c : contacts) {
-    if (!c.owned) continue;
+    if (!c.owned || !c.factor) continue;
     const double s = GranularContactWalker::friction_factor(c.factor);
     sum += s;
     minimum = MIN(minimum, s);

@@ -79,8 +79,10 @@ class FixAcousticMindlin : public Fix {
 
  private:
   double frequency, amplitude;
-  std::string source_group;
+  std::string source_group;      // source group-ID, or
+  std::string source_wall_fix;   // source wall fix-ID (one of the two is empty)
   int source_groupbit;
+  int source_wall;               // index of the source wall plane, -1 for a group
   double direction[3];
   int direction_axis;    // 0, 1, 2 if the direction is along x, y, z, else -1
   SourceMode source_mode;
@@ -105,6 +107,8 @@ class FixAcousticMindlin : public Fix {
   Eigen::VectorXcd solution;    // rank 0: DOF amplitudes of the last successful solve
 
   void parse_keywords(int iarg, int narg, char **arg);
+  void init_source();
+  void init_other_fixes();
   void normalise_direction();
   bool factors_are_current() const;
   void update_factors();

@@ -19,8 +19,11 @@
 
 #include "atom.h"
 #include "collective_error.h"
+#include "domain.h"
 #include "error.h"
+#include "fix.h"
 #include "fix_neigh_history.h"
+#include "fix_wall_gran.h"
 #include "force.h"
 #include "gran_sub_mod_normal.h"
 #include "gran_sub_mod_tangential_acoustic.h"
@@ -36,6 +39,9 @@ using namespace Granular_NS;
 
 // relative step of the centred difference dF_n/d(delta)
 static constexpr double DIFFERENCE_STEP = 1.0e-4;
+// fix wall/gran: its styles of plane, and the position of an absent plane (NULL)
+enum { XPLANE = 0, YPLANE = 1, ZPLANE = 2 };
+static constexpr double ABSENT_PLANE = 1.0e19;
 
 namespace {
 
@@ -124,29 +130,78 @@ void GranularContactWalker::init()
   const int ntypes = atom->ntypes;
   for (int itype = 1; itype <= ntypes; itype++)
     for (int jtype = itype; jtype <= ntypes; jtype++)
-      check_model(pair->models_list[pair->types_indices[itype][jtype]], itype, jtype);
+      check_model(pair->models_list[pair->types_indices[itype][jtype]],
+                  fmt::format("the contacts of atom types {} and {}", itype, jtype), true);
 
   if (!history)
     error->all(FLERR, "{}: pair_style granular keeps no contact history; its tangential models "
                       "must be /acoustic ones", command);
+  locate_walls();
+}
+
+/* ----------------------------------------------------------------------
+   the planes of fix wall/gran; other walls are free surfaces of the network
+------------------------------------------------------------------------- */
+
+void GranularContactWalker::locate_walls()
+{
+  planes.clear();
+  plane_fixes.clear();
+  for (auto *fix : modify->get_fix_list()) {
+    if (utils::strmatch(fix->style, "^wall/gran/region")) {
+      error->warning(FLERR, "{}: the contacts with fix {} (wall/gran/region) are not in the "
+                            "vibration network: the wall is a free surface", command, fix->id);
+      continue;
+    }
+    if (!utils::strmatch(fix->style, "^wall/gran$")) continue;
+    int dim = 0;
+    const int *wallstyle = static_cast<int *>(fix->extract("wallstyle", dim));
+    if (!wallstyle) {
+      error->warning(FLERR, "{}: fix {} cannot tell its contacts (a LAMMPS without the "
+                            "ACOUSTIC patch fix-wall-gran-extract.patch): the wall is a free "
+                            "surface of the vibration network", command, fix->id);
+      continue;
+    }
+    if (*wallstyle != XPLANE && *wallstyle != YPLANE && *wallstyle != ZPLANE) {
+      error->warning(FLERR, "{}: the contacts with fix {} (not a plane) are not in the vibration "
+                            "network: the wall is a free surface", command, fix->id);
+      continue;
+    }
+    if (*static_cast<int *>(fix->extract("wiggle", dim)))
+      error->all(FLERR, "{}: fix {} wall/gran wiggles; a moving wall cannot be part of the "
+                        "vibration network (remove wiggle, or make it a source with wall)",
+                 command, fix->id);
+    auto *model = dynamic_cast<FixWallGran *>(fix)->model;
+    check_model(model, fmt::format("the contacts with fix {}", fix->id), false);
+    const double lo = *static_cast<double *>(fix->extract("lo", dim));
+    const double hi = *static_cast<double *>(fix->extract("hi", dim));
+    if (lo > -ABSENT_PLANE) {
+      planes.push_back({fix->id, 0, *wallstyle, lo});
+      plane_fixes.push_back({fix, model});
+    }
+    if (hi < ABSENT_PLANE) {
+      planes.push_back({fix->id, 1, *wallstyle, hi});
+      plane_fixes.push_back({fix, model});
+    }
+  }
 }
 
 /* ---------------------------------------------------------------------- */
 
-void GranularContactWalker::check_model(GranularModel *model, int itype, int jtype)
+void GranularContactWalker::check_model(GranularModel *model, const std::string &where,
+                                        bool needs_factor)
 {
   const std::string &tangential = model->tangential_model->name;
-  if (!acoustic_tangential(model))
-    error->all(FLERR, "{}: the contacts of atom types {} and {} use tangential model {}, which "
-                      "has no friction factor; use tangential {}/acoustic in pair_coeff",
-               command, itype, jtype, tangential, tangential);
+  if (needs_factor && !acoustic_tangential(model))
+    error->all(FLERR, "{}: {} use tangential model {}, which has no friction factor; use "
+                      "tangential {}/acoustic in pair_coeff", command, where, tangential, tangential);
   const std::string &normal = model->normal_model->name;
   const bool closed_form = normal == "hooke" || normal == "hertz" || normal == "hertz/material" ||
       normal == "dmt";
   if (!closed_form && model->normal_model->size_history > 0)
-    error->all(FLERR, "{}: the contacts of atom types {} and {} use normal model {}, whose force "
-                      "depends on the loading history and cannot be linearised; use hooke, hertz, "
-                      "hertz/material, dmt or jkr", command, itype, jtype, normal);
+    error->all(FLERR, "{}: {} use normal model {}, whose force depends on the loading history "
+                      "and cannot be linearised; use hooke, hertz, hertz/material, dmt or jkr",
+               command, where, normal);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -165,9 +220,17 @@ void GranularContactWalker::linearise(GranularModel *model, GranularContact &c)
   c.kn = normal_stiffness(model, c.delta, c.fn);
 
   AcousticFrictionFactor *tangential = acoustic_tangential(model);
-  c.kt = tangential->tangential_stiffness(contact_radius);
   c.mu = model->tangential_model->get_mu();
-  c.factor = model->history + tangential->friction_factor_index();
+  if (tangential) {
+    c.kt = tangential->tangential_stiffness(contact_radius);
+    c.factor = model->history ? model->history + tangential->friction_factor_index() : nullptr;
+  } else {
+    // a wall without the /acoustic variant: the stiffness of its tangential
+    // spring (k, or k a for the models that scale it), no friction factor
+    const double k = model->tangential_model->get_k();
+    c.kt = model->tangential_model->contact_radius_flag ? k * contact_radius : k;
+    c.factor = nullptr;
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -177,7 +240,15 @@ void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int 
 {
   contacts.clear();
   if (!pair) init();
+  collect_pair(contacts, groupbit, errors);
+  collect_walls(contacts, groupbit, errors);
+}
 
+/* ---------------------------------------------------------------------- */
+
+void GranularContactWalker::collect_pair(std::vector<GranularContact> &contacts, int groupbit,
+                                         CollectiveError &errors)
+{
   double **x = atom->x;
   double *radius = atom->radius;
   int *type = atom->type;
@@ -223,6 +294,7 @@ void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int 
       GranularContact c;
       c.i = i;
       c.j = j;
+      c.wall = -1;
       c.owned = newton || j < nlocal || tag[i] < tag[j];
       c.radi = radius[i];
       c.radj = radius[j];
@@ -269,5 +341,77 @@ bool GranularContactWalker::reset_factors_between_runs(int groupbit)
     }
   }
   history->pre_exchange();
+
+  // the walls keep their histories with the atoms: set them directly
+  for (auto *fix : modify->get_fix_list()) {
+    if (!utils::strmatch(fix->style, "^wall/gran$")) continue;
+    int dim = 0;
+    auto **history_one = static_cast<double **>(fix->extract("history", dim));
+    AcousticFrictionFactor *tangential = acoustic_tangential(dynamic_cast<FixWallGran *>(fix)->model);
+    if (!history_one || !tangential) continue;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((mask[i] & groupbit) && (mask[i] & fix->groupbit))
+        set_friction_factor(history_one[i] + tangential->friction_factor_index(), 1.0);
+  }
   return true;
+}
+
+/* ----------------------------------------------------------------------
+   contacts of owned atoms with the wall planes, as fix wall/gran finds them:
+   each atom of the wall's group touches at most the nearer of its planes
+------------------------------------------------------------------------- */
+
+void GranularContactWalker::collect_walls(std::vector<GranularContact> &contacts, int groupbit,
+                                          CollectiveError &errors)
+{
+  double **x = atom->x;
+  double *radius = atom->radius;
+  int *mask = atom->mask;
+  tagint *tag = atom->tag;
+  for (std::size_t p = 0; p < planes.size(); p++) {
+    const WallPlane &plane = planes[p];
+    Fix *fix = plane_fixes[p].fix;
+    GranularModel *model = plane_fixes[p].model;
+    int dim = 0;
+    auto **history_one = static_cast<double **>(fix->extract("history", dim));
+    const double lo = *static_cast<double *>(fix->extract("lo", dim));
+    const double hi = *static_cast<double *>(fix->extract("hi", dim));
+    const int axis = plane.axis;
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (!(mask[i] & groupbit) || !(mask[i] & fix->groupbit)) continue;
+      // the nearer plane, and the signed distance from it (FixWallGran::post_force)
+      const double below = x[i][axis] - lo, above = hi - x[i][axis];
+      const int side = (below < above) ? 0 : 1;
+      if (side != plane.side) continue;
+      for (int k = 0; k < 3; k++) model->dx[k] = 0.0;
+      model->dx[axis] = (side == 0) ? below : -above;
+      model->radi = radius[i];
+      model->radj = 0.0;
+      model->history = history_one ? history_one[i] : nullptr;
+      if (model->beyond_contact) model->touch = history_one && history_one[i][0] != 0.0;
+      if (!model->check_contact()) continue;
+      if (model->rsq == 0.0) {
+        errors.report(fmt::format("{}: the centre of atom {} lies on the plane of fix {}: the "
+                                  "contact has no normal", command, tag[i], plane.fix_id));
+        continue;
+      }
+      GranularContact c;
+      c.i = i;
+      c.j = -1;
+      c.wall = static_cast<int>(p);
+      c.owned = true;
+      c.radi = radius[i];
+      c.radj = 0.0;
+      linearise(model, c);
+      if (!(std::isfinite(c.fn) && std::isfinite(c.fncrit) && std::isfinite(c.kn) &&
+            std::isfinite(c.kt))) {
+        errors.report(fmt::format("{}: contact of atom {} with fix {}: its normal model {} gives "
+                                  "F_n = {}, k_n = {}, k_t = {}; check its coefficients", command,
+                                  tag[i], plane.fix_id, model->normal_model->name, c.fn, c.kn,
+                                  c.kt));
+        continue;
+      }
+      contacts.push_back(c);
+    }
+  }
 }

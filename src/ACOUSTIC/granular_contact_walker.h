@@ -13,13 +13,16 @@
 
 /* ----------------------------------------------------------------------
    The current contacts of pair_style granular, read from the pair style's
-   own models and history (as fix granular/mdr walks them), linearised for
-   the vibration network of the ACOUSTIC package:
+   own models and history (as fix granular/mdr walks them), and those of
+   the planes of fix wall/gran (read through FixWallGran::extract(), which
+   cmake/patches/fix-wall-gran-extract.patch adds to LAMMPS), linearised
+   for the vibration network of the ACOUSTIC package:
      k_n = dF_n/d(delta) of the contact's normal model (closed form for
            hooke, hertz, hertz/material, dmt; a centred difference of the
            model's own force for jkr and any other model without history),
-     k_t, mu from its tangential model, which must be an /acoustic one,
-     and the history slot of the contact's friction factor.
+     k_t, mu from its tangential model, and the history slot of the
+     contact's friction factor: the tangential models of pair granular must
+     be /acoustic ones; a wall contact without one keeps its friction.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRANULAR_CONTACT_WALKER_H
@@ -36,13 +39,14 @@ namespace Granular_NS {
   class GranularModel;
 }
 
-// one touching contact of an owned atom
+// one touching contact of an owned atom, with another atom or with a wall
 struct GranularContact {
-  int i, j;                 // local indices: i owned, j owned or ghost
+  int i, j;                 // local indices: i owned, j owned or ghost; j = -1 for a wall
+  int wall;                 // the wall plane (GranularContactWalker::walls()), -1 for two atoms
   bool owned;               // this processor counts the contact (newton off lists a
                             // contact across sub-domains on both of its processors)
-  double n[3];              // unit normal (x_i - x_j) / |x_i - x_j|
-  double radi, radj;
+  double n[3];              // unit normal (x_i - x_j) / |x_i - x_j|, from the wall for a wall
+  double radi, radj;        // radj = 0 for a (flat) wall
   double delta;             // overlap
   double fn;                // elastic normal force F_n(delta), damping excluded
   double fncrit;            // normal force of the Coulomb limit (F_n,crit of the normal
@@ -50,7 +54,16 @@ struct GranularContact {
   double kn;                // dF_n/d(delta)
   double kt;                // stiffness of the tangential spring
   double mu;                // friction coefficient of the tangential model
-  double *factor;           // history slot of the friction factor (see AcousticFrictionFactor)
+  double *factor;           // history slot of the friction factor (see AcousticFrictionFactor);
+                            // nullptr for a wall whose tangential model has none
+};
+
+// a plane of fix wall/gran (one fix may have a lower and an upper plane)
+struct WallPlane {
+  std::string fix_id;
+  int side;                 // 0: the lower plane of the fix, 1: the upper one
+  int axis;                 // 0, 1, 2: normal along x, y, z
+  double position;          // coordinate of the plane along its axis
 };
 
 class GranularContactWalker : protected Pointers {
@@ -62,10 +75,15 @@ class GranularContactWalker : protected Pointers {
   // linearised and has an /acoustic tangential model; call from init()
   void init();
 
-  // the touching contacts of owned atoms with both atoms in groupbit; a
-  // contact that cannot be linearised (coincident atoms, a non-finite force)
-  // is reported to `errors` with its atom IDs and left out
+  // the touching contacts of owned atoms with both atoms in groupbit, then
+  // the contacts of owned atoms in groupbit with the wall planes; a contact
+  // that cannot be linearised (coincident atoms, a non-finite force) is
+  // reported to `errors` with its atom IDs and left out
   void collect(std::vector<GranularContact> &contacts, int groupbit, class CollectiveError &errors);
+
+  // the planes of the fix wall/gran instances, in the order of the fixes
+  // (every rank the same); valid after init()
+  const std::vector<WallPlane> &walls() const { return planes; }
 
   // Between runs: set the friction factor of every contact of the group
   // with history to 1 and hand the histories to the history fix, which
@@ -87,8 +105,21 @@ class GranularContactWalker : protected Pointers {
   class PairGranular *pair;
   class FixNeighHistory *history;
 
-  void check_model(Granular_NS::GranularModel *model, int itype, int jtype);
+  // a plane and the fix it belongs to
+  struct WallSource {
+    class Fix *fix;
+    Granular_NS::GranularModel *model;
+  };
+  std::vector<WallPlane> planes;
+  std::vector<WallSource> plane_fixes;
+
+  void check_model(Granular_NS::GranularModel *model, const std::string &where,
+                   bool needs_factor);
   void locate();    // pair granular and its history fix, nullptr if absent
+  void locate_walls();
+  void collect_pair(std::vector<GranularContact> &contacts, int groupbit, class CollectiveError &errors);
+  void collect_walls(std::vector<GranularContact> &contacts, int groupbit,
+                     class CollectiveError &errors);
 };
 
 }    // namespace LAMMPS_NS

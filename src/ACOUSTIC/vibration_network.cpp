@@ -32,7 +32,7 @@
 
 using namespace LAMMPS_NS;
 
-static constexpr int GRAIN_WORDS = 4;      // tag, mass, radius, marked
+static constexpr int GRAIN_WORDS = 4;      // tag, mass, radius, markers (bit k: marker k)
 static constexpr int CONTACT_WORDS = 9;    // tag_i, tag_j, n[3], kn, kt, cn, ct
 
 /* ---------------------------------------------------------------------- */
@@ -119,7 +119,8 @@ int VibrationNetworkSettings::parse(int iarg, int narg, char **arg, const std::s
 
 VibrationNetwork::VibrationNetwork(LAMMPS *lmp, const VibrationNetworkSettings &s,
                                    const std::string &cmd) :
-    Pointers(lmp), settings(s), command(cmd), walker(lmp, cmd), ncontacts_all(0), ngrains_all(0)
+    Pointers(lmp), settings(s), command(cmd), walker(lmp, cmd), ncontacts_all(0), ngrains_all(0),
+    wall_tag_base(0)
 {
 }
 
@@ -141,12 +142,30 @@ int VibrationNetwork::dofs_per_grain() const
    collect, gather, index, assemble
 ------------------------------------------------------------------------- */
 
-void VibrationNetwork::build(int groupbit, int marker_groupbit)
+int VibrationNetwork::wall_of_fix(const std::string &fix_id) const
 {
+  int found = -1;
+  for (std::size_t k = 0; k < walls().size(); k++) {
+    if (walls()[k].fix_id != fix_id) continue;
+    if (found >= 0)
+      error->all(FLERR, "{}: fix {} has two wall planes; give the source or detector plane a fix "
+                        "wall/gran of its own", command, fix_id);
+    found = static_cast<int>(k);
+  }
+  return found;
+}
+
+void VibrationNetwork::build(int groupbit, const std::vector<int> &marker_groupbits)
+{
+  tagint max_tag = 0, max_tag_all = 0;
+  for (int i = 0; i < atom->nlocal; i++) max_tag = MAX(max_tag, atom->tag[i]);
+  MPI_Allreduce(&max_tag, &max_tag_all, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  wall_tag_base = max_tag_all + 1;
+
   CollectiveError errors(lmp);
   walker.collect(contacts, groupbit, errors);
   const std::vector<double> contact_words = pack_contacts(errors);
-  const std::vector<double> grain_words = pack_grains(groupbit, marker_groupbit, errors);
+  const std::vector<double> grain_words = pack_grains(groupbit, marker_groupbits, errors);
   errors.raise(FLERR);
 
   bigint counts_local[2] = {static_cast<bigint>(contact_words.size() / CONTACT_WORDS),
@@ -162,7 +181,8 @@ void VibrationNetwork::build(int groupbit, int marker_groupbit)
 
   if (comm->me == 0) {
     try {
-      std::vector<Acoustic::Grain> grains = index_grains(all_grains, grain_counts);
+      std::vector<Acoustic::Grain> grains =
+          index_grains(all_grains, grain_counts, static_cast<int>(marker_groupbits.size()));
       std::vector<Acoustic::Contact> network_contacts = index_contacts(all_contacts);
       net.reset(new Acoustic::ContactNetwork(domain->dimension, settings.model, std::move(grains),
                                              std::move(network_contacts)));
@@ -200,8 +220,10 @@ void VibrationNetwork::apply_settings(GranularContact &c) const
       (settings.stiffness == VibrationNetworkSettings::HERTZ) ? 2.0 / 7.0 : -1.0;
   const double ratio = (settings.ratio >= 0.0) ? settings.ratio : default_ratio;
   if (settings.stiffness == VibrationNetworkSettings::HERTZ) {
+    // a flat wall is a body of infinite radius
+    const double radj = (c.wall >= 0) ? INFINITY : c.radj;
     const double kappa = settings.kappa_scale *
-        Acoustic::hertz_kappa(settings.youngs_modulus, settings.poisson_ratio, c.radi, c.radj);
+        Acoustic::hertz_kappa(settings.youngs_modulus, settings.poisson_ratio, c.radi, radj);
     c.kn = Acoustic::hertz_normal_stiffness(kappa, c.fn);
   }
   if (ratio >= 0.0) c.kt = ratio * c.kn;
@@ -219,32 +241,39 @@ std::vector<double> VibrationNetwork::pack_contacts(CollectiveError &errors)
   std::vector<double> words;
   words.reserve(contacts.size() * CONTACT_WORDS);
   for (auto &c : contacts) {
+    const bool wall = c.wall >= 0;
+    // a wall: the grain of ID wall_tag_base + plane, of infinite mass
+    const tagint tag_j = wall ? wall_tag_base + c.wall : tag[c.j];
+    const double mass_j = wall ? INFINITY : rmass[c.j];
+    const std::string what = wall
+        ? fmt::format("contact of atom {} with fix {}", tag[c.i], walls()[c.wall].fix_id)
+        : fmt::format("contact of atoms {} and {}", tag[c.i], tag_j);
     double cn = 0.0, ct = 0.0;
     try {
       apply_settings(c);
       if (c.owned && c.kn > 0.0 && settings.damping_ratio > 0.0) {
-        cn = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kn, rmass[c.i], rmass[c.j]);
-        ct = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kt, rmass[c.i], rmass[c.j]);
+        cn = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kn, rmass[c.i], mass_j);
+        ct = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kt, rmass[c.i], mass_j);
       }
     } catch (Acoustic::SolverError &e) {
-      errors.report(fmt::format("{}: contact of atoms {} and {}: {}", command, tag[c.i], tag[c.j],
-                                e.what()));
+      errors.report(fmt::format("{}: {}: {}", command, what, e.what()));
       continue;
     }
     if (!(std::isfinite(c.kn) && std::isfinite(c.kt) && std::isfinite(cn) && std::isfinite(ct))) {
-      errors.report(fmt::format("{}: contact of atoms {} and {} has a non-finite stiffness "
-                                "(k_n = {}, k_t = {}) or dashpot; check the contact model's "
-                                "coefficients and the keywords stiffness, kappa_scale, ratio, "
-                                "damping", command, tag[c.i], tag[c.j], c.kn, c.kt));
+      errors.report(fmt::format("{}: {} has a non-finite stiffness (k_n = {}, k_t = {}) or "
+                                "dashpot; check the contact model's coefficients and the keywords "
+                                "stiffness, kappa_scale, ratio, damping", command, what, c.kn, c.kt));
       continue;
     }
 
     // open or tensile contacts carry no stiffness and stay out of the network
     if (!c.owned || !(c.kn > 0.0)) continue;
-    const bool flip = tag[c.i] > tag[c.j];
+    // from the lower to the higher ID (a wall's is the higher): the network is
+    // then the same whatever the number of processors
+    const bool flip = tag[c.i] > tag_j;
     const double sign = flip ? -1.0 : 1.0;
-    words.push_back(static_cast<double>(flip ? tag[c.j] : tag[c.i]));
-    words.push_back(static_cast<double>(flip ? tag[c.i] : tag[c.j]));
+    words.push_back(static_cast<double>(flip ? tag_j : tag[c.i]));
+    words.push_back(static_cast<double>(flip ? tag[c.i] : tag_j));
     for (int k = 0; k < 3; k++) words.push_back(sign * c.n[k]);
     words.push_back(c.kn);
     words.push_back(c.kt);
@@ -258,7 +287,8 @@ std::vector<double> VibrationNetwork::pack_contacts(CollectiveError &errors)
    owned grains of the group: ID, mass, radius, marked
 ------------------------------------------------------------------------- */
 
-std::vector<double> VibrationNetwork::pack_grains(int groupbit, int marker_groupbit,
+std::vector<double> VibrationNetwork::pack_grains(int groupbit,
+                                                  const std::vector<int> &marker_groupbits,
                                                   CollectiveError &errors)
 {
   tagint *tag = atom->tag;
@@ -276,7 +306,10 @@ std::vector<double> VibrationNetwork::pack_grains(int groupbit, int marker_group
     words.push_back(static_cast<double>(tag[i]));
     words.push_back(rmass[i]);
     words.push_back(radius[i]);
-    words.push_back((mask[i] & marker_groupbit) ? 1.0 : 0.0);
+    int markers = 0;
+    for (std::size_t k = 0; k < marker_groupbits.size(); k++)
+      if (mask[i] & marker_groupbits[k]) markers |= 1 << k;
+    words.push_back(static_cast<double>(markers));
   }
   return words;
 }
@@ -307,7 +340,8 @@ std::vector<double> VibrationNetwork::gather_to_rank0(const std::vector<double> 
 ------------------------------------------------------------------------- */
 
 std::vector<Acoustic::Grain> VibrationNetwork::index_grains(const std::vector<double> &words,
-                                                            const std::vector<int> &counts)
+                                                            const std::vector<int> &counts,
+                                                            int nmarkers)
 {
   const int ngrains = static_cast<int>(words.size() / GRAIN_WORDS);
   std::vector<int> order(ngrains);
@@ -316,18 +350,29 @@ std::vector<Acoustic::Grain> VibrationNetwork::index_grains(const std::vector<do
             [&](int a, int b) { return words[GRAIN_WORDS * a] < words[GRAIN_WORDS * b]; });
   tags_all.resize(ngrains);
   sent_grain_index.assign(ngrains, 0);
-  marked.clear();
+  marked.assign(nmarkers, std::vector<int>());
   std::vector<Acoustic::Grain> grains(ngrains);
   for (int g = 0; g < ngrains; g++) {
     const double *w = &words[GRAIN_WORDS * order[g]];
     tags_all[g] = static_cast<tagint>(w[0]);
     grains[g].mass = w[1];
     grains[g].radius = w[2];
-    if (w[3] != 0.0) marked.push_back(g);
+    const int markers = static_cast<int>(w[3]);
+    for (int k = 0; k < nmarkers; k++)
+      if (markers & (1 << k)) marked[k].push_back(g);
     sent_grain_index[order[g]] = g;
   }
   sent_counts.resize(counts.size());
   for (std::size_t p = 0; p < counts.size(); p++) sent_counts[p] = counts[p] / GRAIN_WORDS;
+
+  // the wall planes: grains after every atom (their IDs are higher), always
+  // prescribed, so that their mass and radius only need to be valid numbers
+  wall_grains.clear();
+  for (std::size_t k = 0; k < walls().size(); k++) {
+    wall_grains.push_back(static_cast<int>(grains.size()));
+    tags_all.push_back(wall_tag_base + static_cast<tagint>(k));
+    grains.push_back({1.0, 1.0});
+  }
   return grains;
 }
 

@@ -63,10 +63,12 @@ class VibrationNetwork : protected Pointers {
   void init();
 
   // collective: walk the contacts of the group, gather them to rank 0 and
-  // build the network there; marker_groupbit selects grains whose index lists
-  // marked_grains() returns on rank 0 (the source, or fixed atoms).  Bad
+  // build the network there; marker k of marker_groupbits selects the grains
+  // whose indices marked_grains(k) lists on rank 0 (the source, the
+  // detector, fixed atoms).  Every wall plane is a node of the network (a
+  // grain of the network without an atom, listed by wall_nodes()).  Bad
   // contacts or atoms stop every rank with an ERROR.
-  void build(int groupbit, int marker_groupbit);
+  void build(int groupbit, const std::vector<int> &marker_groupbits);
 
   // collective: only walk the contacts of the group (local_contacts()), without
   // building the network
@@ -78,9 +80,17 @@ class VibrationNetwork : protected Pointers {
   bigint ncontacts_total() const { return ncontacts_all; }
   bigint ngrains_total() const { return ngrains_all; }
 
+  // the wall planes (every rank), in the order of wall_nodes()
+  const std::vector<WallPlane> &walls() const { return walker.walls(); }
+  // index of the wall plane of fix wall/gran `fix_id`, -1 if it has none;
+  // an ERROR if it has two (lower and upper) planes
+  int wall_of_fix(const std::string &fix_id) const;
+
   // rank 0 only
   const Acoustic::ContactNetwork &network() const { return *net; }
-  const std::vector<int> &marked_grains() const { return marked; }
+  const std::vector<int> &marked_grains(int marker) const { return marked[marker]; }
+  // grain index of each wall plane
+  const std::vector<int> &wall_nodes() const { return wall_grains; }
   const std::vector<tagint> &grain_tags() const { return tags_all; }
 
   // rank 0 holds one complex value per network DOF (grain by grain); each
@@ -102,17 +112,20 @@ class VibrationNetwork : protected Pointers {
   // order in which each processor sent its grains (for scatter)
   std::unique_ptr<Acoustic::ContactNetwork> net;
   std::vector<tagint> tags_all;
-  std::vector<int> marked;
+  std::vector<std::vector<int>> marked;
+  std::vector<int> wall_grains;
+  tagint wall_tag_base;    // wall plane k is the grain of ID wall_tag_base + k
   std::vector<int> sent_counts;
   std::vector<int> sent_grain_index;
 
   // the steps of build()
   void apply_settings(GranularContact &c) const;
   std::vector<double> pack_contacts(class CollectiveError &errors);
-  std::vector<double> pack_grains(int groupbit, int marker_groupbit, class CollectiveError &errors);
+  std::vector<double> pack_grains(int groupbit, const std::vector<int> &marker_groupbits,
+                                  class CollectiveError &errors);
   std::vector<double> gather_to_rank0(const std::vector<double> &mine, std::vector<int> &counts);
   std::vector<Acoustic::Grain> index_grains(const std::vector<double> &words,
-                                            const std::vector<int> &counts);
+                                            const std::vector<int> &counts, int nmarkers);
   std::vector<Acoustic::Contact> index_contacts(const std::vector<double> &words) const;
 };
 

@@ -83,10 +83,10 @@ double lowest_frequency(LammpsInstance &L, const std::string &model)
   net.init();
   const int all = L.lmp->group->bitmask[L.lmp->group->find("all")];
   const int base = L.lmp->group->bitmask[L.lmp->group->find("base")];
-  net.build(all, base);
+  net.build(all, {base});
   const auto &network = net.network();
   std::vector<int> fixed;
-  for (int g : net.marked_grains())
+  for (int g : net.marked_grains(0))
     for (int k = 0; k < network.dofs_per_grain(); k++) fixed.push_back(network.dof(g, k));
   Acoustic::DynamicalMatrix D(network.stiffness_matrix(), network.mass_diagonal(), fixed,
                               network.dofs_per_grain());

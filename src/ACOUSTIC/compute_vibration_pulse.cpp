@@ -1,0 +1,414 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing authors: the ACOUSTIC package developers.
+
+   Response of the frozen contact network to a delta pulse of a source (a
+   group of atoms or a plane of fix wall/gran): the force the grains exert
+   on a detector along the pulse's direction, as paper 003's F_sig(t).
+   The network is the one fix acoustic/mindlin drives (VibrationNetwork),
+   gathered to rank 0 and solved there by the ACOUSTIC numerics.
+------------------------------------------------------------------------- */
+
+#include "compute_vibration_pulse.h"
+
+#include "acoustic_solver_error.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+#include <new>
+
+using namespace LAMMPS_NS;
+
+static const char CMD[] = "compute vibration/pulse";
+static constexpr int SIGNAL_COLUMNS = 2;        // time, F_sig
+static constexpr int AUTO_INTEGRATE_DOFS = 10000;    // method auto: integrate above this
+
+/* ---------------------------------------------------------------------- */
+
+ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), fixed_groupbit(0), method_given(false), ndof(0), solved_step(-1),
+    signal(nullptr), snapshot_values(nullptr), snapshot_atom(nullptr), nmax(0)
+{
+  int iarg = parse_endpoint(3, narg, arg, "source", source);
+  iarg = parse_endpoint(iarg, narg, arg, "detector", detector);
+
+  const int dim = domain->dimension;
+  direction[0] = direction[1] = direction[2] = 0.0;
+  direction[dim == 3 ? 2 : 1] = 1.0;
+  options.duration = -1.0;
+  while (iarg < narg) {
+    const int used = settings.parse(iarg, narg, arg, CMD, lmp, true);
+    if (used > 0) {
+      iarg += used;
+      continue;
+    }
+    const std::string key = arg[iarg];
+    auto need = [&](int n) {
+      if (iarg + n >= narg)
+        error->all(FLERR, "Illegal {} command: keyword {} needs {} value(s)", CMD, key, n);
+    };
+    auto number = [&](int k, const char *what) {
+      return VibrationNetworkSettings::finite_number(arg[iarg + k], CMD, what, lmp);
+    };
+    if (key == "direction") {
+      need(3);
+      direction[0] = number(1, "direction dx");
+      direction[1] = number(2, "direction dy");
+      direction[2] = number(3, "direction dz");
+      iarg += 4;
+    } else if (key == "initial") {
+      need(1);
+      try {
+        options.initial = Acoustic::pulse_initial_from_name(arg[iarg + 1]);
+      } catch (Acoustic::SolverError &e) {
+        error->all(FLERR, "Illegal {} command: {}", CMD, e.what());
+      }
+      iarg += 2;
+    } else if (key == "method") {
+      need(1);
+      if (strcmp(arg[iarg + 1], "auto") != 0) {
+        try {
+          options.method = Acoustic::pulse_method_from_name(arg[iarg + 1]);
+        } catch (Acoustic::SolverError &e) {
+          error->all(FLERR, "Illegal {} command: {} (or auto)", CMD, e.what());
+        }
+        method_given = true;
+      }
+      iarg += 2;
+    } else if (key == "duration") {
+      need(1);
+      options.duration = number(1, "duration");
+      if (options.duration <= 0.0)
+        error->all(FLERR, "Illegal {} command: duration must be > 0 (time units), got {}", CMD,
+                   options.duration);
+      iarg += 2;
+    } else if (key == "samples") {
+      need(1);
+      options.samples = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (options.samples < 2 || options.samples > 10000000)
+        error->all(FLERR, "Illegal {} command: samples must be in [2, 1e7], got {}", CMD,
+                   options.samples);
+      iarg += 2;
+    } else if (key == "timestep") {
+      need(1);
+      options.time_step = number(1, "timestep");
+      if (options.time_step <= 0.0)
+        error->all(FLERR, "Illegal {} command: timestep must be > 0, got {}", CMD,
+                   options.time_step);
+      iarg += 2;
+    } else if (key == "snapshot") {
+      need(1);
+      options.snapshot_time = number(1, "snapshot time");
+      if (options.snapshot_time < 0.0)
+        error->all(FLERR, "Illegal {} command: snapshot time must be >= 0, got {}", CMD,
+                   options.snapshot_time);
+      iarg += 2;
+    } else if (key == "fixed") {
+      need(1);
+      fixed_group = arg[iarg + 1];
+      if (group->find(fixed_group) < 0)
+        error->all(FLERR, "Illegal {} command: fixed group {} does not exist", CMD, fixed_group);
+      iarg += 2;
+    } else {
+      error->all(FLERR, "Illegal {} command: unknown keyword {}; keywords are direction, initial, "
+                        "method, duration, samples, timestep, snapshot, fixed, stiffness, "
+                        "kappa_scale, ratio, model, damping", CMD, key);
+    }
+  }
+  if (options.duration < 0.0)
+    error->all(FLERR, "Illegal {} command: give the time to follow the pulse with duration T", CMD);
+  if (options.snapshot_time > options.duration)
+    error->all(FLERR, "Illegal {} command: the snapshot time {} is after the duration {}", CMD,
+               options.snapshot_time, options.duration);
+  if (dim == 2 && direction[2] != 0.0)
+    error->all(FLERR, "Illegal {} command: in 2D the direction must lie in the xy plane", CMD);
+  const double largest = MAX(fabs(direction[0]), MAX(fabs(direction[1]), fabs(direction[2])));
+  if (largest == 0.0)
+    error->all(FLERR, "Illegal {} command: direction must not be the zero vector", CMD);
+  for (double &d : direction) d /= largest;
+  const double norm = sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
+                           direction[2] * direction[2]);
+  for (double &d : direction) d /= norm;
+  if (method_given && options.method == Acoustic::PulseMethod::Modes && settings.damping_ratio > 0.0)
+    error->all(FLERR, "Illegal {} command: method modes needs an undamped network; use method "
+                      "integrate with damping", CMD);
+
+  ndof = Acoustic::dofs_per_grain(dim, settings.model);
+  network.reset(new VibrationNetwork(lmp, settings, CMD));
+
+  // outputs
+  array_flag = 1;
+  size_array_rows = options.samples;
+  size_array_cols = SIGNAL_COLUMNS;
+  extarray = 0;
+  memory->create(signal, options.samples, SIGNAL_COLUMNS, "vibration/pulse:signal");
+  for (int k = 0; k < options.samples; k++) signal[k][0] = signal[k][1] = 0.0;
+  array = signal;
+  vector_flag = 1;
+  size_vector = NVECTOR;
+  extvector = 0;
+  vector = info;
+  for (double &v : info) v = 0.0;
+  size_peratom_cols = 0;
+  if (options.snapshot_time >= 0.0) {
+    peratom_flag = 1;
+    size_peratom_cols = 3;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+ComputeVibrationPulse::~ComputeVibrationPulse()
+{
+  memory->destroy(signal);
+  memory->destroy(snapshot_values);
+  memory->destroy(snapshot_atom);
+}
+
+/* ----------------------------------------------------------------------
+   source|detector group-ID | wall fix-ID
+------------------------------------------------------------------------- */
+
+int ComputeVibrationPulse::parse_endpoint(int iarg, int narg, char **arg, const char *word,
+                                          Endpoint &end)
+{
+  if (iarg + 1 >= narg || strcmp(arg[iarg], word) != 0)
+    error->all(FLERR, "Illegal {} command: expected compute ID group-ID vibration/pulse source "
+                      "group-ID|wall fix-ID detector group-ID|wall fix-ID [keyword value ...], "
+                      "got '{}' where '{}' belongs", CMD, (iarg < narg) ? arg[iarg] : "", word);
+  if (strcmp(arg[iarg + 1], "wall") == 0) {
+    if (iarg + 2 >= narg)
+      error->all(FLERR, "Illegal {} command: {} wall needs the ID of a fix wall/gran", CMD, word);
+    end.wall_fix = arg[iarg + 2];
+    Fix *wall = modify->get_fix_by_id(end.wall_fix);
+    if (!wall || !utils::strmatch(wall->style, "^wall/gran$"))
+      error->all(FLERR, "Illegal {} command: {} wall {} is not a fix wall/gran", CMD, word,
+                 end.wall_fix);
+    return iarg + 3;
+  }
+  end.group = arg[iarg + 1];
+  if (group->find(end.group) < 0)
+    error->all(FLERR, "Illegal {} command: {} group {} does not exist; define it with the group "
+                      "command first", CMD, word, end.group);
+  return iarg + 2;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeVibrationPulse::init_endpoint(Endpoint &end, const char *word)
+{
+  end.groupbit = 0;
+  end.wall = -1;
+  if (!end.wall_fix.empty()) {
+    end.wall = network->wall_of_fix(end.wall_fix);
+    if (end.wall < 0)
+      error->all(FLERR, "{}: {} wall {} has no plane in the vibration network (it must be a fix "
+                        "wall/gran xplane, yplane or zplane)", CMD, word, end.wall_fix);
+    return;
+  }
+  const int igroup_end = group->find(end.group);
+  if (igroup_end < 0) error->all(FLERR, "{}: {} group {} no longer exists", CMD, word, end.group);
+  end.groupbit = group->bitmask[igroup_end];
+  bigint counts_local[2] = {0, 0}, counts[2];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & end.groupbit)) continue;
+    if (atom->mask[i] & groupbit) counts_local[0]++;
+    else counts_local[1]++;
+  }
+  MPI_Allreduce(counts_local, counts, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (counts[0] == 0)
+    error->all(FLERR, "{}: {} group {} has no atom in the compute group {}", CMD, word, end.group,
+               group->names[igroup]);
+  if (counts[1] > 0)
+    error->all(FLERR, "{}: {} atoms of the {} group {} are not in the compute group {}; they must "
+                      "all belong to it", CMD, counts[1], word, end.group, group->names[igroup]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeVibrationPulse::init()
+{
+  network->init();
+  init_endpoint(source, "source");
+  init_endpoint(detector, "detector");
+  if (source.wall >= 0 && source.wall == detector.wall)
+    error->all(FLERR, "{}: the source and the detector are the same wall {}", CMD, source.wall_fix);
+  if (source.groupbit && detector.groupbit) {
+    bigint common_local = 0, common = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & source.groupbit) && (atom->mask[i] & detector.groupbit)) common_local++;
+    MPI_Allreduce(&common_local, &common, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (common > 0)
+      error->all(FLERR, "{}: {} atoms are in both the source group {} and the detector group {}",
+                 CMD, common, source.group, detector.group);
+  }
+  fixed_groupbit = 0;
+  if (!fixed_group.empty()) {
+    const int ifixed = group->find(fixed_group);
+    if (ifixed < 0) error->all(FLERR, "{}: fixed group {} no longer exists", CMD, fixed_group);
+    fixed_groupbit = group->bitmask[ifixed];
+  }
+  solved_step = -1;    // the packing may have changed since the last run
+}
+
+/* ----------------------------------------------------------------------
+   rank 0: the network just built as a pulse problem; its walls and the
+   source, detector and fixed atoms are prescribed
+------------------------------------------------------------------------- */
+
+Acoustic::PulseProblem ComputeVibrationPulse::pulse_problem() const
+{
+  const Acoustic::ContactNetwork &net = network->network();
+  Acoustic::PulseProblem p;
+  p.stiffness = net.stiffness_matrix();
+  if (net.has_damping()) p.damping = net.damping_matrix();
+  p.mass = net.mass_diagonal();
+  p.dofs_per_grain = ndof;
+  p.dimension = domain->dimension;
+  p.direction = Eigen::Vector3d(direction[0], direction[1], direction[2]);
+  p.source = Eigen::VectorXd::Zero(net.num_dofs());
+  p.detector = Eigen::VectorXd::Zero(net.num_dofs());
+  auto prescribe = [&](int g, Eigen::VectorXd *pattern) {
+    for (int k = 0; k < ndof; k++) {
+      p.prescribed_dofs.push_back(net.dof(g, k));
+      if (pattern && k < p.dimension) (*pattern)[net.dof(g, k)] = direction[k];
+    }
+  };
+  // markers 0, 1, 2: the source, detector and fixed groups
+  for (int g : network->marked_grains(0)) prescribe(g, &p.source);
+  for (int g : network->marked_grains(1)) prescribe(g, &p.detector);
+  for (int g : network->marked_grains(2)) prescribe(g, nullptr);
+  const std::vector<int> &walls = network->wall_nodes();
+  for (std::size_t k = 0; k < walls.size(); k++) {
+    Eigen::VectorXd *pattern = nullptr;
+    if (static_cast<int>(k) == source.wall) pattern = &p.source;
+    if (static_cast<int>(k) == detector.wall) pattern = &p.detector;
+    prescribe(walls[k], pattern);
+  }
+  return p;
+}
+
+/* ----------------------------------------------------------------------
+   rank 0: the pulse response; returns an error message, empty on success
+------------------------------------------------------------------------- */
+
+std::string ComputeVibrationPulse::solve_on_rank0()
+{
+  try {
+    const Acoustic::PulseProblem p = pulse_problem();
+    Acoustic::PulseOptions o = options;
+    if (!method_given) {
+      const long free = p.mass.size() - static_cast<long>(p.prescribed_dofs.size());
+      o.method = (settings.damping_ratio > 0.0 || free > AUTO_INTEGRATE_DOFS)
+          ? Acoustic::PulseMethod::Integrate
+          : Acoustic::PulseMethod::Modes;
+    }
+    const Acoustic::PulseResponse r = Acoustic::pulse_response(p, o);
+    for (int k = 0; k < options.samples; k++) {
+      signal[k][0] = r.times[k];
+      signal[k][1] = r.signal[k];
+    }
+    info[TIME_STEP] = r.time_step;
+    info[STEPS] = static_cast<double>(r.steps);
+    info[FREE_DOFS] = r.num_free;
+    snapshot = r.snapshot;
+  } catch (Acoustic::SolverError &e) {
+    return e.what();
+  } catch (std::bad_alloc &) {
+    return "out of memory; use method integrate for large networks";
+  }
+  return std::string();
+}
+
+/* ----------------------------------------------------------------------
+   build the network and solve, once per timestep
+------------------------------------------------------------------------- */
+
+void ComputeVibrationPulse::solve()
+{
+  if (solved_step == update->ntimestep) return;
+  network->build(groupbit, {source.groupbit, detector.groupbit, fixed_groupbit});
+  std::string failure;
+  if (comm->me == 0) failure = solve_on_rank0();
+  int length = static_cast<int>(failure.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, world);
+  if (length > 0) {
+    failure.resize(length);
+    MPI_Bcast(&failure[0], length, MPI_CHAR, 0, world);
+    error->all(FLERR, "{}: {}", CMD, failure);
+  }
+  MPI_Bcast(&signal[0][0], options.samples * SIGNAL_COLUMNS, MPI_DOUBLE, 0, world);
+  MPI_Bcast(info, NVECTOR, MPI_DOUBLE, 0, world);
+  solved_step = update->ntimestep;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeVibrationPulse::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  solve();
+}
+
+void ComputeVibrationPulse::compute_array()
+{
+  invoked_array = update->ntimestep;
+  solve();
+}
+
+/* ----------------------------------------------------------------------
+   displacement of each atom at the snapshot time (0 outside the group and
+   for prescribed atoms)
+------------------------------------------------------------------------- */
+
+void ComputeVibrationPulse::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  solve();
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(snapshot_values);
+    memory->destroy(snapshot_atom);
+    memory->create(snapshot_values, nmax, 2 * ndof, "vibration/pulse:snapshot_values");
+    memory->create(snapshot_atom, nmax, size_peratom_cols, "vibration/pulse:snapshot_atom");
+    array_atom = snapshot_atom;
+  }
+  Eigen::VectorXcd values;
+  if (comm->me == 0) values = snapshot.cast<std::complex<double>>();
+  network->scatter(values, snapshot_values, groupbit);
+  const int dim = domain->dimension;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int k = 0; k < 3; k++) snapshot_atom[i][k] = (k < dim) ? snapshot_values[i][2 * k] : 0.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double ComputeVibrationPulse::memory_usage()
+{
+  double bytes = static_cast<double>(options.samples) * SIGNAL_COLUMNS * sizeof(double);
+  if (peratom_flag) bytes += static_cast<double>(nmax) * (2 * ndof + size_peratom_cols) * sizeof(double);
+  bytes += static_cast<double>(snapshot.size()) * sizeof(double);
+  return bytes;
+}
