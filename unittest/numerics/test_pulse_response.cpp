@@ -5,6 +5,7 @@
 #include "acoustic_contact_network.h"
 #include "acoustic_pulse_response.h"
 #include "acoustic_solver_error.h"
+#include "network_builders.h"
 
 #include <gtest/gtest.h>
 
@@ -200,6 +201,83 @@ TEST(PulseResponse, RejectsInvalidInput)
   EXPECT_THROW(pulse_response(q, o), SolverError);
   EXPECT_THROW(pulse_initial_from_name("kick"), SolverError);
   EXPECT_THROW(pulse_method_from_name("fast"), SolverError);
+}
+
+}    // namespace
+
+namespace {
+
+// A triangular lattice of N rows of nx Hertz balls (diameter 1, density 1:
+// m = pi/6), rows parallel to two walls, periodic along the rows, under the
+// pressure p (E* = 1, nu = 0: contact force f = p / sqrt(3), normal stiffness
+// k = (3 f)^(1/3) / 2, tangential eta k with eta = 1), hard walls below and
+// above: the arrival time of the coherent peak at the upper wall after a
+// pulse of the lower one (condition A)
+double lattice_peak_time(int rows, double p, ContactModel model)
+{
+  const int nx = 3;
+  const double m = M_PI / 6.0, f = p / std::sqrt(3.0);
+  const double k = 0.5 * std::cbrt(3.0 * f), eta = 1.0;
+  // a ball on a hard wall carries sqrt(3) f: F = (4/3) sqrt(1/2) n^(3/2), k_w = dF/dn
+  const double fw = std::sqrt(3.0) * f;
+  const double kw = 2.0 * std::sqrt(0.5) * std::sqrt(std::cbrt(std::pow(3.0 * fw / (4.0 * std::sqrt(0.5)), 2.0)));
+  const int lower = nx * rows, upper = lower + 1;
+  std::vector<Grain> grains(nx * rows + 2, Grain{m, 0.5});
+  std::vector<Contact> contacts;
+  for (const AcousticTest::Bond &b : AcousticTest::triangular_lattice_bonds(nx, rows, true))
+    contacts.push_back(Contact{b.i, b.j, b.normal, k, eta * k, 0.0, 0.0});
+  for (int c = 0; c < nx; ++c) {
+    contacts.push_back(Contact{c, lower, Eigen::Vector3d(0.0, 1.0, 0.0), kw, eta * kw, 0.0, 0.0});
+    contacts.push_back(Contact{upper, (rows - 1) * nx + c, Eigen::Vector3d(0.0, 1.0, 0.0), kw, eta * kw, 0.0, 0.0});
+  }
+  const ContactNetwork network(2, model, grains, contacts);
+  PulseProblem pb;
+  pb.stiffness = network.stiffness_matrix();
+  pb.mass = network.mass_diagonal();
+  pb.dofs_per_grain = network.dofs_per_grain();
+  pb.dimension = 2;
+  pb.direction = Eigen::Vector3d(0.0, 1.0, 0.0);
+  pb.source = Eigen::VectorXd::Zero(pb.mass.size());
+  pb.detector = Eigen::VectorXd::Zero(pb.mass.size());
+  for (int d = 0; d < network.dofs_per_grain(); ++d) {
+    pb.prescribed_dofs.push_back(network.dof(lower, d));
+    pb.prescribed_dofs.push_back(network.dof(upper, d));
+  }
+  pb.source[network.dof(lower, 1)] = 1.0;
+  pb.detector[network.dof(upper, 1)] = 1.0;
+  // the front arrives at about rows sqrt(3)/2 / c
+  const double c_guess = 1.1 * std::pow(p, 1.0 / 6.0);    // Eq. 18, about
+  PulseOptions o;
+  o.method = PulseMethod::Integrate;
+  o.duration = 1.3 * rows * 0.8660254 / c_guess;
+  o.samples = 4001;
+  const PulseResponse r = pulse_response(pb, o);
+  const Eigen::VectorXd &sig = r.signal;
+  const double threshold = 0.01 * sig.cwiseAbs().maxCoeff();
+  int top = 1;
+  while (!(sig[top] >= threshold && sig[top] >= sig[top - 1] && sig[top] > sig[top + 1])) ++top;
+  // the parabola through the three samples around the maximum
+  const double h = r.times[1] - r.times[0];
+  const double a = sig[top - 1], b = sig[top], c = sig[top + 1];
+  return r.times[top] + 0.5 * h * (a - c) / (a - 2.0 * b + c);
+}
+
+TEST(PulseLattice, FrontSpeedOfPaper003Eqs18And19)
+{
+  // c / sqrt(E*/rho) = 3^(19/12) / (2^(3/2) pi^(1/2)) (p/E*)^(1/6), times sqrt(1 + eta/3) with friction
+  const double p = 1e-4;
+  const double frictionless = std::pow(3.0, 19.0 / 12.0) / (std::pow(2.0, 1.5) * std::sqrt(M_PI)) *
+      std::pow(p, 1.0 / 6.0);
+  const int rows[2] = {150, 300};
+  for (ContactModel model : {ContactModel::Normal, ContactModel::Full}) {
+    const double t1 = lattice_peak_time(rows[0], p, model), t2 = lattice_peak_time(rows[1], p, model);
+    const double speed = (rows[1] - rows[0]) * 0.8660254037844386 / (t2 - t1);
+    const double expected = frictionless * ((model == ContactModel::Full) ? std::sqrt(1.0 + 1.0 / 3.0) : 1.0);
+    std::printf("[ triangular lattice, p = 1e-4, %s ] c_tof %.5f, paper 003 Eq. %s %.5f (%.2f %%)\n",
+                model == ContactModel::Full ? "frictional" : "frictionless", speed,
+                model == ContactModel::Full ? "19" : "18", expected, 100.0 * (speed / expected - 1.0));
+    EXPECT_NEAR(speed / expected, 1.0, 0.03);
+  }
 }
 
 }    // namespace
