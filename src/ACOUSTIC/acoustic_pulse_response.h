@@ -80,12 +80,9 @@ struct PulseResponse {
 };
 
 // Throws SolverError on invalid input (sizes, a source that touches no free
-// DOF, method modes with damping, more than 20 000 free DOFs for modes).
+// DOF, method modes with damping, more than 20 000 free DOFs for modes, a
+// time step of method integrate that is not below the stability bound).
 PulseResponse pulse_response(const PulseProblem &problem, const PulseOptions &options);
-
-// The automatic time step of method integrate: 0.03 / w_max (error of the
-// chain's coherent peak below 1e-3 of it over 40 periods of its lowest mode).
-double pulse_default_time_step(const PulseProblem &problem);
 
 }    // namespace Acoustic
 

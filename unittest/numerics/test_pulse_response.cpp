@@ -195,10 +195,19 @@ TEST(PulseResponse, RejectsInvalidInput)
   EXPECT_THROW(pulse_response(p, o), SolverError) << "modes with damping";
   o.method = PulseMethod::Integrate;
   EXPECT_NO_THROW(pulse_response(p, o));
+  // k = m = 1: Gershgorin bounds w_max^2 by 4, so steps from 2/2 = 1 on are refused
+  o.time_step = 1.0;
+  EXPECT_THROW(pulse_response(p, o), SolverError) << "a step beyond the stability bound";
+  o.time_step = 0.9;
+  EXPECT_NO_THROW(pulse_response(p, o));
+  o.time_step = 0.0;
   PulseProblem q = chain(5, 1.0, 1.0);
   q.source.setZero();
   q.source[3] = 1.0;    // a free DOF
   EXPECT_THROW(pulse_response(q, o), SolverError);
+  PulseProblem deaf = chain(5, 1.0, 1.0);
+  deaf.detector.setZero();    // a detector pattern on no DOF
+  EXPECT_THROW(pulse_response(deaf, o), SolverError) << "a detector that touches no grain";
   EXPECT_THROW(pulse_initial_from_name("kick"), SolverError);
   EXPECT_THROW(pulse_method_from_name("fast"), SolverError);
 }

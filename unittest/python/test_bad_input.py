@@ -37,6 +37,10 @@ thermo 0
 
 FIX = "fix ac all acoustic/mindlin 10 frequency 0.5 amplitude 1e-3 source base"
 COMPUTE = "compute m all vibration/modes fixed base"
+TOP = "region upper block INF INF 3.0 INF INF INF units box\ngroup top region upper\n"
+PULSE = TOP + "compute p all vibration/pulse source base detector top duration 20"
+FLOOR = ("fix floor all wall/gran granular hooke 1e4 0 tangential linear_history/acoustic 8e3 0 0.5 "
+         "yplane -0.6 NULL\n")
 
 # (name, lines after LAYER, expected part of the ERROR message)
 BAD_INPUTS = [
@@ -135,6 +139,42 @@ BAD_INPUTS = [
      "group one id 1:12\ncompute m one vibration/modes mode 300\n"
      "dump d all custom 1 shape.dump id c_m[1]\nrun 0",
      "mode 300 is out of range"),
+    # compute vibration/pulse
+    ("pulse_missing_duration", TOP + "compute p all vibration/pulse source base detector top",
+     "give the time to follow the pulse with duration T"),
+    ("pulse_negative_duration", PULSE + " duration -1", "duration must be > 0 (time units), got -1"),
+    ("pulse_infinite_duration", PULSE + " duration 1e400",
+     "Floating point number 1e400 in input script or data file is out of range"),
+    ("pulse_one_sample", PULSE + " samples 1", "samples must be in [2, 1e7], got 1"),
+    ("pulse_zero_timestep", PULSE + " timestep 0", "timestep must be > 0, got 0"),
+    ("pulse_snapshot_after_the_end", PULSE + " snapshot 30", "the snapshot time 30 is after the duration 20"),
+    ("pulse_bad_initial", PULSE + " initial kick", "unknown initial condition 'kick': use velocity or displacement"),
+    ("pulse_bad_method", PULSE + " method fast", "unknown pulse method 'fast': use modes or integrate"),
+    ("pulse_modes_with_damping", PULSE + " method modes damping 0.1", "method modes needs an undamped network"),
+    ("pulse_zero_direction", PULSE + " direction 0 0 0", "direction must not be the zero vector"),
+    ("pulse_direction_out_of_plane", PULSE + " direction 0 0 1", "in 2D the direction must lie in the xy plane"),
+    ("pulse_unknown_keyword", PULSE + " loudness 3", "unknown keyword loudness"),
+    ("pulse_missing_detector", "compute p all vibration/pulse source base duration 20",
+     "got 'duration' where 'detector' belongs"),
+    ("pulse_missing_group", "compute p all vibration/pulse source base detector roof duration 20",
+     "detector group roof does not exist"),
+    ("pulse_wall_without_id", "compute p all vibration/pulse source base detector wall",
+     "detector wall needs the ID of a fix wall/gran"),
+    ("pulse_wall_not_wall_gran", TOP + "compute p all vibration/pulse source wall plane detector top duration 20",
+     "source wall plane is not a fix wall/gran"),
+    ("pulse_same_wall", FLOOR + "compute p all vibration/pulse source wall floor detector wall floor "
+     "duration 20\nrun 0", "the source and the detector are the same wall floor"),
+    ("pulse_overlapping_groups", TOP + "compute p all vibration/pulse source all detector top duration 20\nrun 0",
+     "atoms are in both the source group all and the detector group top"),
+    ("pulse_source_not_in_group", TOP + "compute p grains vibration/pulse source base detector top duration 20\nrun 0",
+     "source group base has no atom in the compute group grains"),
+    ("pulse_source_partly_outside", TOP + "group halfbase id <= 5\ngroup sheet union grains halfbase\n"
+     "compute p sheet vibration/pulse source base detector top duration 20\nrun 0",
+     "atoms of the source group base are not in the compute group sheet"),
+    ("pulse_deaf_detector", FLOOR + TOP + "compute p all vibration/pulse source top detector wall floor "
+     "duration 20\nthermo_style custom step c_p[3]\nrun 0", "the detector touches no free grain"),
+    ("pulse_unstable_timestep", PULSE + " method integrate timestep 100\nthermo_style custom step c_p[3]\nrun 0",
+     "the integration could be unstable"),
     ("compute_tangential_without_factor",
      "pair_coeff * * hooke 1e4 0 tangential linear_history 8e3 0 0.5\n" + COMPUTE +
      "\nthermo_style custom step c_m\nrun 0",
