@@ -15,7 +15,8 @@
            the host rank.
      ldlt  sparse LDL^T of the real symmetric matrix (CHOLMOD simplicial, no
            pivoting), on the host rank; undamped problems only.
-     auto  mumps.
+     auto  mumps (fix acoustic/mindlin gives it MPI_COMM_SELF on rank 0:
+           bitwise reproducible; solver mumps gets the whole world).
    The solver object keeps the symbolic analysis (fill-reducing ordering) of
    each factorisation and only refactorises numerically while the sparsity
    pattern of the free-free matrix stays the same; a new pattern is analysed

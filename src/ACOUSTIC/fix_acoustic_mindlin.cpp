@@ -127,8 +127,11 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
   restart_peratom = 1;
 
   network.reset(new VibrationNetwork(lmp, settings, CMD));
-  // collective: with solver auto or mumps every rank takes part in the factorisation
-  solver.reset(new Acoustic::HelmholtzSolver(solver_choice, 1e-6, world));
+  // collective.  solver mumps: every rank takes part in the factorisation
+  // (MUMPS then sums in the order messages arrive: not bitwise reproducible);
+  // auto: MUMPS on rank 0 alone, the same answer every run
+  const bool team = (solver_choice == Acoustic::LinearSolverChoice::Mumps);
+  solver.reset(new Acoustic::HelmholtzSolver(solver_choice, 1e-6, team ? world : MPI_COMM_SELF));
   // reuse yes: between two updates few contacts change, precondition with the
   // last factors (faster, but the factors then depend on the earlier updates)
   solver->set_reuse_factorisation(reuse);
