@@ -1,0 +1,129 @@
+"""tools/sound.py on synthetic signals and packings with known answers"""
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+import sound
+
+
+def ricker(t, t0, width, amplitude):
+    """amplitude (1 - u^2) exp(-u^2 / 2), u = (t - t0) / width: peak at t0,
+    zero crossings at t0 -+ width"""
+    u = (t - t0) / width
+    return amplitude * (1.0 - u ** 2) * np.exp(-0.5 * u ** 2)
+
+
+def test_coherent_peak_of_a_known_pulse():
+    t = np.linspace(0.0, 100.0, 20001)
+    t0, width, amplitude = 40.0, 3.0, 0.7
+    f = ricker(t, t0, width, amplitude) + ricker(t, 60.0, 3.0, 2.0)    # a larger later arrival
+    peak = sound.coherent_peak(t, f)
+    # the 10 % level before the peak: (1 - u^2) exp(-u^2/2) = 0.1 for u < 0
+    u10 = brentq(lambda u: (1 - u * u) * math.exp(-0.5 * u * u) - 0.1, -1.0, 0.0)
+    assert peak["amplitude"] == pytest.approx(amplitude, rel=1e-6)
+    assert peak["t_peak"] == pytest.approx(t0, abs=1e-4)
+    assert peak["t10"] == pytest.approx(t0 + u10 * width, abs=1e-3)
+    assert peak["t_zero"] == pytest.approx(t0 + width, abs=1e-3)
+    assert peak["width"] == pytest.approx(width * (1.0 - u10), abs=2e-3)
+
+
+def test_no_peak_is_an_error():
+    t = np.linspace(0.0, 1.0, 11)
+    with pytest.raises(ValueError):
+        sound.coherent_peak(t, t)    # monotonic: no maximum
+
+
+def test_time_of_flight_and_power_laws():
+    assert sound.time_of_flight_speed(8.0, 30.0, 25.0, 95.0) == pytest.approx(17.0 / 65.0)
+    x = np.array([8.0, 12.0, 18.0, 25.0])
+    y = 3.0 * x ** -0.7
+    exponent, prefactor = sound.power_law_fit(x, y)
+    assert exponent == pytest.approx(-0.7)
+    assert prefactor == pytest.approx(3.0)
+    mid, slopes = sound.effective_exponents(x, y)
+    assert np.allclose(slopes, -0.7)
+    assert mid[0] == pytest.approx(math.sqrt(96.0))
+
+
+def test_ensemble_mean_and_rms():
+    t = np.linspace(0.0, 10.0, 101)
+    base = np.sin(t)
+    signals = [(t, base + 1.0), (t, base - 1.0), (t[:81], (base - 1.0)[:81]), (t[:81], (base + 1.0)[:81])]
+    grid, mean, rms = sound.ensemble(signals)
+    assert len(grid) == 81
+    assert np.allclose(mean, base[:81])
+    assert np.allclose(rms, 1.0)
+
+
+def test_read_vector_blocks_takes_the_last(tmp_path):
+    path = tmp_path / "pulse.dat"
+    path.write_text("# Time-averaged data\n# TimeStep Number-of-rows\n# Row c_p[1] c_p[2]\n"
+                    "0 2\n1 0 5\n2 1 6\n100 3\n1 0 0\n2 0.5 1.5\n3 1 2.5\n")
+    blocks = sound.read_vector_blocks(path)
+    assert [step for step, _ in blocks] == [0, 100]
+    t, f = sound.read_pulse(path)
+    assert list(t) == [0.0, 0.5, 1.0]
+    assert list(f) == [0.0, 1.5, 2.5]
+
+
+def test_rattlers_are_removed_one_after_the_other():
+    # 1-2-3-4 a chain from the wall (j = 0): 1 touches the wall and 2; 2 touches
+    # 1 and 3; 3 touches 2 and 4; 4 touches only 3; 5 touches nothing.  4 and 5
+    # go first, then 3 (one contact left), then 2, then 1: all rattlers
+    ids = [1, 2, 3, 4, 5]
+    ci, cj = [1, 1, 2, 3], [0, 2, 3, 4]
+    assert sound.rattlers(ids, ci, cj) == {1, 2, 3, 4, 5}
+    # closing the loop 3-1 and adding a second wall contact to 3 keeps 1, 2, 3
+    assert sound.rattlers(ids, ci + [3, 3], cj + [1, 0]) == {4, 5}
+
+
+def test_static_properties_of_a_small_packing():
+    # four grains of radius 0.5 in the bulk of a 4 x 10 cell (boundary 3):
+    # 1, 2, 3 in a triangle of contacts, 4 a rattler; forces 1, 2, 3
+    grains = {"id": np.array([1, 2, 3, 4]), "y": np.array([4.0, 4.0, 4.9, 6.0]),
+              "radius": np.full(4, 0.5)}
+    contacts = {"c0": np.array([1, 2, 3]), "c1": np.array([2, 3, 1]), "c2": np.array([1.0, 2.0, 3.0])}
+    out = sound.static_properties(grains, contacts, width=4.0, height=10.0, pressure=0.5, boundary=3.0)
+    area = 4.0 * 4.0
+    assert out["phi2"] == pytest.approx(4 * math.pi * 0.25 / area)
+    assert out["phi3"] == pytest.approx(4 * 4.0 / 3.0 * math.pi * 0.125 / area)
+    assert out["phi3_star"] == pytest.approx(3 * 4.0 / 3.0 * math.pi * 0.125 / area)
+    assert out["f0"] == pytest.approx(0.25)
+    assert out["z_star"] == pytest.approx(2.0)
+    assert out["mean_force_over_p"] == pytest.approx(2.0 / 0.5)
+    assert out["Z2"] == pytest.approx((1 + 4 + 9) / 3 / 4.0)
+    assert out["Z3"] == pytest.approx((1 + 8 + 27) / 3 / 8.0)
+    # the same grains in a 3D cell of depth 2: volume fractions halve, no Phi2
+    deep = sound.static_properties(grains, contacts, width=4.0, height=10.0, pressure=0.5, boundary=3.0, depth=2.0)
+    assert "phi2" not in deep
+    assert deep["phi3_star"] == pytest.approx(out["phi3_star"] / 2.0)
+    assert deep["z_star"] == out["z_star"]
+
+
+def test_linear_response():
+    good = {"C11": 1.0, "C11_half": 1.1, "C22": 2.0, "C22_half": 1.9, "C33": 0.5, "C33_half": 0.45}
+    assert sound.linear_response(good)
+    assert not sound.linear_response(dict(good, C33_half=0.2)), "a rearrangement in the second half"
+    assert not sound.linear_response(dict(good, C22=-0.1)), "a negative modulus"
+    assert not sound.linear_response(dict(good, C11=float("nan"))), "not a number"
+    assert not sound.linear_response({"C11": 1.0}), "no half-way values"
+
+
+def test_speeds():
+    c_l, c_t = sound.sound_speeds(0.0188, 0.004, 0.52)
+    assert c_l == pytest.approx(math.sqrt(0.0188 / 0.52))
+    assert c_t == pytest.approx(math.sqrt(0.004 / 0.52))
+    # paper 003 Eq. 18 at p = 1e-4, and Eq. 19 with eta = 1
+    assert sound.triangular_lattice_speed(1e-4) == pytest.approx(0.24471, rel=1e-4)
+    assert sound.triangular_lattice_speed(1e-4, eta=1.0) == pytest.approx(0.24471 * math.sqrt(4 / 3), rel=1e-4)
+
+
+def test_read_dump_local_and_custom(tmp_path):
+    local = tmp_path / "c.dump"
+    local.write_text("ITEM: TIMESTEP\n5\nITEM: NUMBER OF ENTRIES\n2\nITEM: BOX BOUNDS pp ff pp\n"
+                     "0 1\n0 1\n0 1\nITEM: ENTRIES c_a[1] c_a[2]\n1 2\n3 4\n")
+    d = sound.read_dump(local)
+    assert list(d["c_a[1]"]) == [1.0, 3.0]
+    assert list(d["c1"]) == [2.0, 4.0]
