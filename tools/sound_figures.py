@@ -10,6 +10,12 @@ import numpy as np  # noqa: E402
 import sound  # noqa: E402
 
 
+def _save(fig, path):
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
 def fig4_signals(signals, mean_signal, path, title):
     """Fig. 4: F_sig(t) of several samples (grey), their mean and RMS"""
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
@@ -23,9 +29,7 @@ def fig4_signals(signals, mean_signal, path, title):
     ax.set_ylabel(r"$F_{sig}$ (unit pulse)")
     ax.set_title(title)
     ax.legend(frameon=False)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    _save(fig, path)
 
 
 def fig6_arrival_times(heights, t10, t_peak, t_zero, path, title):
@@ -42,9 +46,7 @@ def fig6_arrival_times(heights, t10, t_peak, t_zero, path, title):
     ax.set_ylabel("arrival time")
     ax.set_title(title)
     ax.legend(frameon=False)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    _save(fig, path)
 
 
 def fig7_exponents(curves, path):
@@ -65,9 +67,7 @@ def fig7_exponents(curves, path):
     bottom.set_xlabel("L")
     top.set_xscale("log")
     top.legend(frameon=False, fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    _save(fig, path)
 
 
 def fig8_speeds(pressure, c_tof, c_tof_err, c_l, c_t, path):
@@ -89,9 +89,7 @@ def fig8_speeds(pressure, c_tof, c_tof_err, c_l, c_t, path):
     ax.set_xlabel(r"$p / E^*$")
     ax.set_ylabel(r"$c / \sqrt{E^*/\rho}$")
     ax.legend(frameon=False, fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    _save(fig, path)
 
 
 def fig9_spectrum(frequencies, path, title):
@@ -102,6 +100,21 @@ def fig9_spectrum(frequencies, path, title):
     ax.set_xlabel("mode n")
     ax.set_ylabel(r"$\omega_n^2$")
     ax.set_title(title)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    _save(fig, path)
+
+
+def stress_ratio_against_overshoot(overshoot, ratio, pressure, path):
+    """sigma_1/sigma_2 of each packing against the largest pressure of its
+    compression over the final one (p_peak/p): how overconsolidated the
+    packing is; one colour per pressure"""
+    fig, ax = plt.subplots(figsize=(5.0, 4.0))
+    overshoot, ratio, pressure = map(np.asarray, (overshoot, ratio, pressure))
+    for k, p in enumerate(sorted(set(pressure.tolist()))):
+        chosen = pressure == p
+        ax.plot(overshoot[chosen], ratio[chosen], "o", color=f"C{k}", label=f"p = {p:g}")
+    ax.axhspan(0.71 - 0.04, 0.79 + 0.06, color="0.85", label="paper 003, Table II")
+    ax.set_xscale("log")
+    ax.set_xlabel(r"$p_{peak} / p$ during the compression")
+    ax.set_ylabel(r"$\sigma_1/\sigma_2$")
+    ax.legend(frameon=False, fontsize=8)
+    _save(fig, path)

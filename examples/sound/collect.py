@@ -17,6 +17,24 @@ import sound  # noqa: E402
 import sound_figures  # noqa: E402
 
 
+# paper 003, Table I: Phi2, Phi3, Phi3*, z*, f0, <N/p>, Z(2), Z(3)
+PAPER_TABLE_I = {
+    1e-7: ("0.818 ± 0.005", "0.561 ± 0.005", "0.48 ± 0.01", "3.18 ± 0.03", "0.15 ± 0.02", "1.31", "1.49", "2.81"),
+    1e-6: ("0.814 ± 0.004", "0.558 ± 0.005", "0.49 ± 0.01", "3.23 ± 0.04", "0.14 ± 0.02", "1.27", "1.50", "2.83"),
+    1e-5: ("0.809 ± 0.004", "0.554 ± 0.005", "0.50 ± 0.01", "3.31 ± 0.03", "0.11 ± 0.02", "1.22", "1.49", "2.77"),
+    1e-4: ("0.815 ± 0.005", "0.558 ± 0.005", "0.52 ± 0.01", "3.48 ± 0.03", "0.074 ± 0.015", "1.06", "1.51", "2.90"),
+}
+# paper 003, Table II: sigma1/sigma2, C11, C12, C22, C33
+PAPER_TABLE_II = {
+    1e-7: ("0.79 ± 0.06", "(9.9 ± 0.9)e-4", "(8.1 ± 0.4)e-4", "(13.9 ± 0.8)e-4", "(1.2 ± 0.4)e-4"),
+    1e-6: ("0.79 ± 0.06", "(2.3 ± 0.2)e-3", "(1.7 ± 0.08)e-3", "(3.2 ± 0.2)e-3", "(0.35 ± 0.07)e-3"),
+    1e-5: ("0.78 ± 0.06", "(5.4 ± 0.5)e-3", "(3.5 ± 0.2)e-3", "(7.4 ± 0.3)e-3", "(1.1 ± 0.2)e-3"),
+    1e-4: ("0.71 ± 0.04", "(1.35 ± 0.09)e-2", "(6.8 ± 0.4)e-3", "(1.88 ± 0.08)e-2", "(4.0 ± 0.5)e-3"),
+}
+# C22 and Phi3* of the two tables: the paper's c_l = sqrt(C22 / Phi3*)
+PAPER_C22_PHI3STAR = {1e-7: (13.9e-4, 0.48), 1e-6: (3.2e-3, 0.49), 1e-5: (7.4e-3, 0.50), 1e-4: (1.88e-2, 0.52)}
+
+
 def samples(out):
     """(p, H, seed) -> directory of every finished sample"""
     found = {}
@@ -40,6 +58,8 @@ def sample_results(path):
     contacts = sound.read_dump(os.path.join(path, "contacts.dump"))
     result.update(sound.static_properties(grains, contacts, summary["W"], summary["h"], summary["p"],
                                           depth=summary.get("D") or None))
+    if "p_peak" in summary:
+        result["overshoot"] = summary["p_peak"] / summary["p"]
     return result
 
 
@@ -91,9 +111,14 @@ def main():
     os.makedirs(figures, exist_ok=True)
     found = samples(out)
     per_sample = {key: sample_results(path) for key, path in found.items()}
+    # a packing whose servo did not bring the wall pressure within 5 % of the
+    # target belongs to no pressure series
+    off_target = sorted(os.path.basename(found[key]) for key, r in per_sample.items()
+                        if abs(r["p"] / key[0] - 1.0) > 0.05)
+    per_sample = {key: r for key, r in per_sample.items() if os.path.basename(found[key]) not in off_target}
     pressures = sorted({p for p, _, _ in per_sample})
     results = {"samples": {f"p{p:g}_H{H}_s{s}": r for (p, H, s), r in per_sample.items()},
-               "pressures": {}}
+               "off_target": off_target, "pressures": {}}
     lines = []
     for p in pressures:
         seeds = sorted({s for (q, _, s) in per_sample if q == p})
@@ -118,20 +143,27 @@ def main():
             entry["gamma"] = mean_std(gammas)
             entry["alpha"] = mean_std(alphas)
         for key in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3",
-                    "sigma1_over_sigma2", "max_acceleration", "wall_seconds"):
+                    "sigma1_over_sigma2", "overshoot", "max_acceleration", "wall_seconds"):
             if tall and key in tall[0]:
                 entry[key] = mean_std([r[key] for r in tall])
-        # moduli: the samples whose response stayed linear (no rearrangement)
-        linear = [r for r in tall if sound.linear_response(r)]
-        entry["moduli_samples"] = len(linear)
-        for key in ("C11", "C12", "C12_from_eps11", "C22", "C33", "strain"):
-            if linear:
-                entry[key] = mean_std([r[key] for r in linear])
+        # moduli: the samples whose response stayed linear (no rearrangement),
+        # judged per loading: compression and stretch (C11, C12, C22), shear (C33)
+        normal = [r for r in tall if sound.linear_response(r, keys=("C11", "C22"))]
+        shear = [r for r in tall if sound.linear_response(r, keys=("C33",))]
+        entry["moduli_samples"] = f"{len(normal)} / {len(shear)}"
+        for key in ("C11", "C12", "C12_from_eps11", "C22", "strain"):
+            if normal:
+                entry[key] = mean_std([r[key] for r in normal])
+        if shear:
+            entry["C33"] = mean_std([r["C33"] for r in shear])
+        c_l, c_t = sound.sound_speeds(entry.get("C22", (math.nan,))[0], entry.get("C33", (math.nan,))[0],
+                                      entry["phi3_star"][0])
         if "C22" in entry:
-            c_l, c_t = sound.sound_speeds(entry["C22"][0], max(entry["C33"][0], 0.0), entry["phi3_star"][0])
-            entry["c_l"], entry["c_t"] = c_l, c_t
+            entry["c_l"] = c_l
             if "c_tof_t10" in entry:
                 entry["c_tof_over_c_l"] = entry["c_tof_t10"][0] / c_l
+        if "C33" in entry:
+            entry["c_t"] = c_t
         results["pressures"][f"{p:g}"] = entry
 
     # c_tof ~ p^x
@@ -140,6 +172,12 @@ def main():
         x, prefactor = sound.power_law_fit(with_speed, [results["pressures"][f"{p:g}"]["c_tof_t10"][0]
                                                           for p in with_speed])
         results["c_tof_exponent"] = x
+    for key in ("c_l", "c_t"):
+        with_speed_key = [p for p in pressures if key in results["pressures"][f"{p:g}"]]
+        if len(with_speed_key) >= 2:
+            x, _ = sound.power_law_fit(with_speed_key, [results["pressures"][f"{p:g}"][key] for p in with_speed_key])
+            results[f"{key}_exponent"] = x
+            results[f"{key}_exponent_pressures"] = with_speed_key
 
     chain_dir = os.path.join(out, "chain")
     if os.path.isdir(chain_dir):
@@ -152,6 +190,13 @@ def main():
                 _, a = sound.effective_exponents(c["N"], c["rise"])
                 c["gamma_eff"] = list(-g)
                 c["alpha_eff"] = list(a)
+
+    # the stress ratio of every packing against the overshoot of its compression
+    with_overshoot = [(r["overshoot"], r["sigma1_over_sigma2"], q) for (q, _, _), r in per_sample.items()
+                      if "overshoot" in r]
+    if len(with_overshoot) >= 3:
+        overshoot, ratio, _ = zip(*with_overshoot)
+        results["log_overshoot_stress_ratio_correlation"] = float(np.corrcoef(np.log(overshoot), ratio)[0, 1])
 
     series = height_series(per_sample, 1e-4)
     if series:
@@ -167,25 +212,59 @@ def main():
         value = entry[key]
         if isinstance(value, (list, tuple)):
             return (fmt + " ± " + fmt).format(*value)
+        if isinstance(value, str):
+            return value
         return fmt.format(value)
 
-    lines.append("| p | samples | Φ2 | Φ3 | Φ3* | z* | f0 | ⟨N⟩/p | Z(2) | Z(3) |")
+    lines.append("Table I (bulk of the H = 25 packings; paper: 30 samples per pressure)")
+    lines.append("")
+    lines.append("| p | source | samples | Φ2 | Φ3 | Φ3* | z* | f0 | ⟨N⟩/p | Z(2) | Z(3) |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    for p in pressures:
+        e = results["pressures"][f"{p:g}"]
+        if p in PAPER_TABLE_I:
+            lines.append(f"| {p:g} | paper 003 | 30 | " + " | ".join(PAPER_TABLE_I[p]) + " |")
+        lines.append(f"| {p:g} | ACOUSTIC | {e['tall_samples']} | " + " | ".join(
+            cell(e, k) for k in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3")) + " |")
+    lines.append("")
+    lines.append("Table II (H = 25 packings whose response stayed linear; mean ± standard deviation;")
+    lines.append("moduli samples: linear in compression and stretch / in shear)")
+    lines.append("")
+    lines.append("| p | source | σ1/σ2 | p_peak/p | moduli samples | C11 | C12 | C12 (from ε11) | C22 | C33 |")
     lines.append("|---|---|---|---|---|---|---|---|---|---|")
     for p in pressures:
         e = results["pressures"][f"{p:g}"]
-        lines.append(f"| {p:g} | {e['tall_samples']} | " + " | ".join(
-            cell(e, k) for k in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3")) + " |")
+        if p in PAPER_TABLE_II:
+            ratio, c11, c12, c22, c33 = PAPER_TABLE_II[p]
+            lines.append(f"| {p:g} | paper 003 | {ratio} | - | 30 | {c11} | {c12} | - | {c22} | {c33} |")
+        lines.append(f"| {p:g} | ACOUSTIC | " + " | ".join(cell(e, k) for k in (
+            "sigma1_over_sigma2", "overshoot", "moduli_samples", "C11", "C12", "C12_from_eps11", "C22", "C33")) + " |")
     lines.append("")
-    lines.append("| p | σ1/σ2 | moduli samples | C11 | C12 | C12 (from ε11) | C22 | C33 | c_ℓ | c_t | c_tof (10 %) | c_tof (peak) | c_tof (zero) | c_tof/c_ℓ | γ (L 8-25) | α (L 8-25) |")
-    lines.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    lines.append("Speeds and the coherent peak (c_tof from the H = 8 and H = 25 packings of each seed)")
+    lines.append("")
+    lines.append("| p | pairs | c_tof (10 %) | c_tof (peak) | c_tof (zero) | c_ℓ | c_t | c_tof/c_ℓ | paper c_ℓ (Table II) | γ (L 8-25) | α (L 8-25) |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|---|")
     for p in pressures:
         e = results["pressures"][f"{p:g}"]
-        lines.append(f"| {p:g} | " + " | ".join(cell(e, k) for k in (
-            "sigma1_over_sigma2", "moduli_samples", "C11", "C12", "C12_from_eps11", "C22", "C33", "c_l", "c_t", "c_tof_t10", "c_tof_t_peak",
-            "c_tof_t_zero", "c_tof_over_c_l", "gamma", "alpha")) + " |")
+        paper_c_l = "-"
+        if p in PAPER_TABLE_II:
+            paper_c_l = f"{math.sqrt(PAPER_C22_PHI3STAR[p][0] / PAPER_C22_PHI3STAR[p][1]):.3g}"
+        lines.append(f"| {p:g} | {e['samples']} | " + " | ".join(cell(e, k) for k in (
+            "c_tof_t10", "c_tof_t_peak", "c_tof_t_zero", "c_l", "c_t", "c_tof_over_c_l")) +
+            f" | {paper_c_l} | " + " | ".join(cell(e, k) for k in ("gamma", "alpha")) + " |")
+    lines.append("")
+    lines.append(f"packings left out (final pressure more than 5 % from the target): {off_target or 'none'}")
+    if "log_overshoot_stress_ratio_correlation" in results:
+        lines.append("")
+        lines.append("correlation of sigma1/sigma2 with log(p_peak/p) over all packings: "
+                     f"{results['log_overshoot_stress_ratio_correlation']:.3f}")
     if "c_tof_exponent" in results:
         lines.append("")
         lines.append(f"c_tof ∝ p^x with x = {results['c_tof_exponent']:.4f} (paper: 1/6 = 0.1667)")
+        for key, paper in (("c_l", "0.18"), ("c_t", "0.23")):
+            if f"{key}_exponent" in results:
+                lines.append(f"{key} ∝ p^x with x = {results[key + '_exponent']:.3f} over p = "
+                             f"{results[key + '_exponent_pressures']} (paper: {paper})")
     if "chain" in results:
         for condition in ("A", "B"):
             c = results["chain"][condition]
@@ -231,6 +310,9 @@ def main():
     if "disordered_1e-4" in results:
         d = results["disordered_1e-4"]
         curves["2D disordered, p = 1e-4, A"] = (d["L"], d["amplitude"], d["width"])
+    if with_overshoot:
+        sound_figures.stress_ratio_against_overshoot(*zip(*with_overshoot),
+                                                     os.path.join(figures, "stress_ratio_overshoot.png"))
     if curves:
         sound_figures.fig7_exponents(curves, os.path.join(figures, "fig7_exponents.png"))
 

@@ -127,3 +127,21 @@ def test_read_dump_local_and_custom(tmp_path):
     d = sound.read_dump(local)
     assert list(d["c_a[1]"]) == [1.0, 3.0]
     assert list(d["c1"]) == [2.0, 4.0]
+
+
+def test_figures_are_written(tmp_path):
+    import sound_figures
+
+    t = np.linspace(0.0, 100.0, 500)
+    signals = [(t, np.exp(-((t - 40.0 - k) / 5.0) ** 2)) for k in range(3)]
+    paths = [tmp_path / name for name in ("f4.png", "f6.png", "f7.png", "f8.png", "f9.png", "ratio.png")]
+    sound_figures.fig4_signals(signals, sound.ensemble(signals), paths[0], "synthetic")
+    sound_figures.fig6_arrival_times([8.0, 16.0, 25.0], [20.0, 50.0, 85.0], [30.0, 62.0, 100.0],
+                                     [40.0, 75.0, 120.0], paths[1], "synthetic")
+    sound_figures.fig7_exponents({"chain": ([8, 16, 32], [1.0, 0.63, 0.4], [2.0, 2.5, 3.2])}, paths[2])
+    sound_figures.fig8_speeds([1e-6, 1e-5, 1e-4], [0.12, 0.18, 0.25], [0.01, 0.01, 0.01],
+                              [0.07, 0.11, 0.17], [0.03, 0.05, 0.07], paths[3])
+    sound_figures.fig9_spectrum(np.sqrt(np.linspace(0.0, 1.0, 50)) / (2 * math.pi), paths[4], "synthetic")
+    sound_figures.stress_ratio_against_overshoot([1.5, 3.0, 10.0], [0.8, 1.0, 1.2], [1e-4, 1e-5, 1e-6], paths[5])
+    for path in paths:
+        assert path.stat().st_size > 1000, path
