@@ -135,7 +135,7 @@ def main():
             gammas.append(-math.log(tall["amplitude_A"] / short["amplitude_A"]) / span)
             alphas.append(math.log(tall["width_A"] / short["width_A"]) / span)
         tall = [r for (q, H, _), r in per_sample.items() if q == p and H == 25]
-        entry = {"samples": len(seeds), "tall_samples": len(tall)}
+        entry = {"samples": len(speeds["t10"]), "tall_samples": len(tall)}
         for key, values in speeds.items():
             if values:
                 entry[f"c_tof_{key}"] = mean_std(values)
