@@ -223,7 +223,7 @@ def main():
     for p in pressures:
         e = results["pressures"][f"{p:g}"]
         if p in PAPER_TABLE_I:
-            lines.append(f"| {p:g} | paper 003 | 30 | " + " | ".join(PAPER_TABLE_I[p]) + " |")
+            lines.append(f"| {p:g} | paper 003 (2D) | 30 | " + " | ".join(PAPER_TABLE_I[p]) + " |")
         lines.append(f"| {p:g} | ACOUSTIC | {e['tall_samples']} | " + " | ".join(
             cell(e, k) for k in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3")) + " |")
     lines.append("")
@@ -236,7 +236,7 @@ def main():
         e = results["pressures"][f"{p:g}"]
         if p in PAPER_TABLE_II:
             ratio, c11, c12, c22, c33 = PAPER_TABLE_II[p]
-            lines.append(f"| {p:g} | paper 003 | {ratio} | - | 30 | {c11} | {c12} | - | {c22} | {c33} |")
+            lines.append(f"| {p:g} | paper 003 (2D) | {ratio} | - | 30 | {c11} | {c12} | - | {c22} | {c33} |")
         lines.append(f"| {p:g} | ACOUSTIC | " + " | ".join(cell(e, k) for k in (
             "sigma1_over_sigma2", "overshoot", "moduli_samples", "C11", "C12", "C12_from_eps11", "C22", "C33")) + " |")
     lines.append("")
@@ -272,7 +272,7 @@ def main():
                 lines.append(f"chain {condition}: N {c['N']}, gamma_eff {np.round(c['gamma_eff'], 3).tolist()}, "
                              f"alpha_eff (rise time) {np.round(c['alpha_eff'], 3).tolist()}")
     if series:
-        lines.append(f"2D p = 1e-4 (condition A): H {series['H']}, samples {series['samples']}, "
+        lines.append(f"p = 1e-4, condition A, heights: H {series['H']}, samples {series['samples']}, "
                      f"L {np.round(series['L'], 2).tolist()}, gamma_eff {np.round(series['gamma_eff'], 3).tolist()}, "
                      f"alpha_eff {np.round(series['alpha_eff'], 3).tolist()}")
     text = "\n".join(lines)
@@ -309,7 +309,7 @@ def main():
                 curves[f"1D chain, {condition}"] = (c["N"], c["amplitude"], c["rise"])
     if "disordered_1e-4" in results:
         d = results["disordered_1e-4"]
-        curves["2D disordered, p = 1e-4, A"] = (d["L"], d["amplitude"], d["width"])
+        curves["disordered packings, p = 1e-4, A"] = (d["L"], d["amplitude"], d["width"])
     if with_overshoot:
         sound_figures.stress_ratio_against_overshoot(*zip(*with_overshoot),
                                                      os.path.join(figures, "stress_ratio_overshoot.png"))
