@@ -48,7 +48,8 @@ static constexpr int AUTO_INTEGRATE_DOFS = 10000;    // method auto: integrate a
 /* ---------------------------------------------------------------------- */
 
 ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), fixed_groupbit(0), method_given(false), ndof(0), solved_step(-1),
+    Compute(lmp, narg, arg), fixed_groupbit(0), direction_given(false), method_given(false), ndof(0),
+    solved_step(-1),
     signal(nullptr), snapshot_values(nullptr), snapshot_atom(nullptr), nmax(0)
 {
   int iarg = parse_endpoint(3, narg, arg, "source", source);
@@ -77,6 +78,7 @@ ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int narg, char **arg) 
       direction[0] = number(1, "direction dx");
       direction[1] = number(2, "direction dy");
       direction[2] = number(3, "direction dz");
+      direction_given = true;
       iarg += 4;
     } else if (key == "initial") {
       need(1);
@@ -253,6 +255,7 @@ void ComputeVibrationPulse::init()
   network->init();
   init_endpoint(source, "source");
   init_endpoint(detector, "detector");
+  if (source.wall >= 0 && !direction_given) network->wall_normal(source.wall, direction);
   if (source.wall >= 0 && source.wall == detector.wall)
     error->all(FLERR, "{}: the source and the detector are the same wall {}", CMD, source.wall_fix);
   if (source.groupbit && detector.groupbit) {

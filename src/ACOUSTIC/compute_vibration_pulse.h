@@ -55,6 +55,7 @@ class ComputeVibrationPulse : public Compute {
   int fixed_groupbit;
   VibrationNetworkSettings settings;
   double direction[3];
+  bool direction_given;    // false: the default, normal to a source wall
   Acoustic::PulseOptions options;
   bool method_given;
   std::unique_ptr<VibrationNetwork> network;

@@ -50,7 +50,7 @@ static const char CMD[] = "fix acoustic/mindlin";
 /* ---------------------------------------------------------------------- */
 
 FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), source_groupbit(0), source_wall(-1), direction_axis(-1), source_mode(ALL),
+    Fix(lmp, narg, arg), source_groupbit(0), source_wall(-1), direction_axis(-1), direction_given(false), source_mode(ALL),
     solver_choice(Acoustic::LinearSolverChoice::Auto), reuse(false), ndof(0), damped(0), last_update(-1),
     atoms_at_end(0), q_atom(nullptr), amplitude_atom(nullptr), contact_array(nullptr),
     ncontact_rows(0), maxcontact_rows(0)
@@ -189,6 +189,7 @@ void FixAcousticMindlin::parse_keywords(int iarg, int narg, char **arg)
       const char *names[3] = {"direction dx", "direction dy", "direction dz"};
       for (int k = 0; k < 3; k++)
         direction[k] = VibrationNetworkSettings::finite_number(arg[iarg + 1 + k], CMD, names[k], lmp);
+      direction_given = true;
       iarg += 4;
     } else if (key == "mode") {
       need(1);
@@ -280,6 +281,11 @@ void FixAcousticMindlin::init_source()
     if (source_wall < 0)
       error->all(FLERR, "{}: source wall {} has no plane in the vibration network (it must be a "
                         "fix wall/gran xplane, yplane or zplane)", CMD, source_wall_fix);
+    if (!direction_given) {
+      // the default drive of a wall: along its normal
+      network->wall_normal(source_wall, direction);
+      direction_axis = network->walls()[source_wall].axis;
+    }
     return;
   }
   const int igroup_source = group->find(source_group);

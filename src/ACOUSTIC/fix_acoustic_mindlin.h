@@ -85,6 +85,7 @@ class FixAcousticMindlin : public Fix {
   int source_wall;               // index of the source wall plane, -1 for a group
   double direction[3];
   int direction_axis;    // 0, 1, 2 if the direction is along x, y, z, else -1
+  bool direction_given;  // false: the default, normal to a source wall
   SourceMode source_mode;
   VibrationNetworkSettings settings;
   Acoustic::MindlinFrictionLaw law;

@@ -155,6 +155,14 @@ int VibrationNetwork::wall_of_fix(const std::string &fix_id) const
   return found;
 }
 
+/* ---------------------------------------------------------------------- */
+
+void VibrationNetwork::wall_normal(int wall, double *normal) const
+{
+  normal[0] = normal[1] = normal[2] = 0.0;
+  normal[walls()[wall].axis] = 1.0;
+}
+
 void VibrationNetwork::build(int groupbit, const std::vector<int> &marker_groupbits)
 {
   tagint max_tag = 0, max_tag_all = 0;

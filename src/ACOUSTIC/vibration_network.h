@@ -85,6 +85,8 @@ class VibrationNetwork : protected Pointers {
   // index of the wall plane of fix wall/gran `fix_id`, -1 if it has none;
   // an ERROR if it has two (lower and upper) planes
   int wall_of_fix(const std::string &fix_id) const;
+  // the unit normal of wall plane `wall` (along its axis) in normal[3]
+  void wall_normal(int wall, double *normal) const;
 
   // rank 0 only
   const Acoustic::ContactNetwork &network() const { return *net; }

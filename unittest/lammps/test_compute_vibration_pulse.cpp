@@ -31,22 +31,30 @@ std::string num(double v)
   return buf;
 }
 
-// N grains of diameter 1 and mass m on the z axis between two walls, every
-// contact (hooke k) overlapping by 0.01; each wall is a fix wall/gran of its own
-std::string chain_deck(int n, double m, double k)
+// N grains of diameter 1 and mass m on the z axis (or x: axis 0) between two
+// walls, every contact (hooke k) overlapping by 0.01; each wall is a fix
+// wall/gran of its own
+std::string chain_deck(int n, double m, double k, int axis = 2)
 {
   const double step = 0.99;
+  std::string range[3] = {"-2 2", "-2 2", "-2 2"};
+  range[axis] = "-1 " + num(n * step + 2.0);
   std::string d = "units lj\natom_style sphere\natom_modify map array\nboundary f f f\n"
-                  "comm_modify vel yes\nregion box block -2 2 -2 2 -1 " + num(n * step + 2.0) +
-                  "\ncreate_box 1 box\n";
-  for (int j = 0; j < n; j++) d += "create_atoms 1 single 0 0 " + num(0.49 + j * step) + "\n";
+                  "comm_modify vel yes\nregion box block " + range[0] + " " + range[1] + " " +
+                  range[2] + "\ncreate_box 1 box\n";
+  for (int j = 0; j < n; j++) {
+    std::string at[3] = {"0", "0", "0"};
+    at[axis] = num(0.49 + j * step);
+    d += "create_atoms 1 single " + at[0] + " " + at[1] + " " + at[2] + "\n";
+  }
   const std::string model = "hooke " + num(k) + " 0 tangential linear_history/acoustic " +
                             num(0.5 * k) + " 0 0.5";
+  const std::string plane = std::string(1, "xyz"[axis]) + "plane";
   d += "set group all diameter 1.0\nset group all mass " + num(m) + "\n"
        "pair_style granular\npair_coeff * * " + model + "\n"
-       "fix bottom all wall/gran granular " + model + " zplane 0.0 NULL\n"
-       "fix top all wall/gran granular " + model + " zplane NULL " + num(0.98 + (n - 1) * step) +
-       "\nthermo 0\n";
+       "fix bottom all wall/gran granular " + model + " " + plane + " 0.0 NULL\n"
+       "fix top all wall/gran granular " + model + " " + plane + " NULL " +
+       num(0.98 + (n - 1) * step) + "\nthermo 0\n";
   return d;
 }
 
@@ -90,6 +98,47 @@ TEST(PulseThroughLammps, ChainBetweenWallsIsTheClosedModalSolution)
   EXPECT_LE(largest, 1e-6 * peak) << "peak " << peak;
   pulse->compute_vector();
   EXPECT_EQ(pulse->vector[2], 3.0 * n) << "free DOFs: the translations of the grains";
+}
+
+// without a direction keyword, a wall source drives along the wall's normal
+// (here x, in 3D, where the default for a group source is z)
+TEST(WallsInTheNetwork, DefaultDirectionIsTheSourceWallNormal)
+{
+  const int n = 12;
+  const double m = 1.0, k = 2000.0;
+  LammpsInstance L;
+  L.commands(chain_deck(n, m, k, 0));
+  L.commands("compute pulse all vibration/pulse source wall bottom detector wall top duration 1.0 "
+             "samples 101 method modes\nthermo_style custom step c_pulse[3]\nrun 0\n");
+  auto *pulse = compute_of(L, "pulse");
+  pulse->compute_array();
+  double peak = 0.0, largest = 0.0;
+  for (int s = 0; s < 101; s++) {
+    peak = std::max(peak, std::fabs(pulse->array[s][1]));
+    largest = std::max(largest, std::fabs(pulse->array[s][1] - chain_signal(n, m, k, pulse->array[s][0])));
+  }
+  ASSERT_GT(peak, 1.0) << "the pulse along x reaches the detector";
+  EXPECT_LE(largest, 1e-6 * peak);
+
+  // the fix: the default drive of a wall source is the one along its normal, bitwise
+  std::vector<double> amplitudes[2];
+  for (int given = 0; given < 2; given++) {
+    LammpsInstance F;
+    F.commands(chain_deck(n, m, k, 0));
+    F.command(std::string("fix ac all acoustic/mindlin 100 frequency 2.0 amplitude 1e-3 source wall "
+                          "bottom") + (given ? " direction 1 0 0" : "") + "\nrun 0");
+    LAMMPS_NS::Fix *fix = F.lmp->modify->get_fix_by_id("ac");
+    std::vector<double> mine;
+    for (int i = 0; i < F.lmp->atom->nlocal; i++) {
+      mine.push_back(F.lmp->atom->tag[i]);
+      mine.push_back(fix->array_atom[i][0]);
+    }
+    const std::vector<double> all = AcousticTest::allgather(F, mine);
+    amplitudes[given].assign(n + 1, 0.0);
+    for (std::size_t j = 0; j < all.size(); j += 2) amplitudes[given][static_cast<int>(all[j])] = all[j + 1];
+  }
+  EXPECT_GT(*std::max_element(amplitudes[0].begin(), amplitudes[0].end()), 1e-3);
+  for (int t = 1; t <= n; t++) EXPECT_EQ(amplitudes[0][t], amplitudes[1][t]) << "atom " << t;
 }
 
 TEST(PulseThroughLammps, IntegrateAgreesWithModes)
