@@ -4,7 +4,8 @@
 # the two avalanche angles theta_m at the end.  2 MPI ranks.
 # Usage: examples/avalanche/run.sh BUILD_DIR   (./run.sh demo passes it)
 # Environment: AVALANCHE_NP (MPI ranks, default 2), AVALANCHE_H (H/d, default 6),
-#              AVALANCHE_L (L/d, default 80), AVALANCHE_THETA0 (first angle, default 10)
+#              AVALANCHE_L (L/d, default 80), AVALANCHE_THETA0 (first angle, default 10),
+#              AVALANCHE_OUT (output directory, default examples/avalanche/out/demo)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${1:-$here/../../build}
@@ -16,9 +17,10 @@ H=${AVALANCHE_H:-6}
 L=${AVALANCHE_L:-80}
 theta0=${AVALANCHE_THETA0:-10}
 kappa=0.3     # kappa_scale: puts 70 kHz in the top of the network's spectrum (RESULTS.md)
-out=$here/out/demo
+out=${AVALANCHE_OUT:-$here/out/demo}
 mkdir -p "$out"
 cd "$out"
+out=$(pwd)
 if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 mpi=(mpirun -np "$np")
 if mpirun --version 2>/dev/null | grep -q "Open MPI"; then mpi+=(--oversubscribe); fi
