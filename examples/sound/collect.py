@@ -13,6 +13,7 @@ import numpy as np
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "..", "tools"))
+import network_moduli  # noqa: E402
 import sound  # noqa: E402
 import sound_figures  # noqa: E402
 
@@ -60,6 +61,10 @@ def sample_results(path):
                                           depth=summary.get("D") or None))
     if "p_peak" in summary:
         result["overshoot"] = summary["p_peak"] / summary["p"]
+    if not summary.get("D"):
+        # the same moduli from the linear response of the contact network (2D)
+        network = network_moduli.network_moduli(grains, contacts, summary["W"], summary["h"])
+        result.update({f"{key}_network": value for key, value in network.items()})
     return result
 
 
@@ -156,6 +161,15 @@ def main():
                 entry[key] = mean_std([r[key] for r in normal])
         if shear:
             entry["C33"] = mean_std([r["C33"] for r in shear])
+        # the network's moduli (every packing: the network is linear), and the
+        # DEM's over the network's on the packings whose DEM response stayed linear
+        if tall and "C22_network" in tall[0]:
+            for key in ("C22", "C33"):
+                entry[f"{key}_network"] = mean_std([r[f"{key}_network"] for r in tall])
+            if normal:
+                entry["C22_dem_over_network"] = mean_std([r["C22"] / r["C22_network"] for r in normal])
+            if shear:
+                entry["C33_dem_over_network"] = mean_std([r["C33"] / r["C33_network"] for r in shear])
         c_l, c_t = sound.sound_speeds(entry.get("C22", (math.nan,))[0], entry.get("C33", (math.nan,))[0],
                                       entry["phi3_star"][0])
         if "C22" in entry:
@@ -239,6 +253,17 @@ def main():
             lines.append(f"| {p:g} | paper 003 (2D) | {ratio} | - | 30 | {c11} | {c12} | - | {c22} | {c33} |")
         lines.append(f"| {p:g} | ACOUSTIC | " + " | ".join(cell(e, k) for k in (
             "sigma1_over_sigma2", "overshoot", "moduli_samples", "C11", "C12", "C12_from_eps11", "C22", "C33")) + " |")
+        if "C22_network" in e:
+            lines.append(f"| {p:g} | ACOUSTIC, network | - | - | {e['tall_samples']} | - | - | - | "
+                         f"{cell(e, 'C22_network')} | {cell(e, 'C33_network')} |")
+    lines.append("")
+    lines.append("DEM moduli over network moduli, packing by packing (where the DEM response stayed linear)")
+    lines.append("")
+    lines.append("| p | C22 (DEM / network) | C33 (DEM / network) |")
+    lines.append("|---|---|---|")
+    for p in pressures:
+        e = results["pressures"][f"{p:g}"]
+        lines.append(f"| {p:g} | {cell(e, 'C22_dem_over_network')} | {cell(e, 'C33_dem_over_network')} |")
     lines.append("")
     lines.append("Speeds and the coherent peak (c_tof from the H = 8 and H = 25 packings of each seed)")
     lines.append("")

@@ -1,0 +1,112 @@
+"""Elastic moduli C22 and C33 of a 2D packing between two walls from the
+linear response of its contact network (paper 003 Table II), an independent
+check of the DEM measurement of examples/sound/in.moduli.
+
+The network is the one fix acoustic/mindlin exposes (its local array: atom
+IDs i and j, 0 for a wall, normal force f_n and normal stiffness k_n): each
+contact is a normal spring k_n and a tangential spring k_t = eta k_n at the
+contact point (Hertz-Mindlin, eta = 2 (1 - nu) / (2 - nu), 1 for nu = 0),
+on grains that translate in the xy plane and rotate about z.  The bottom
+wall is clamped; the top wall is displaced by -eps h along y (C22 = the
+change of the force per unit area on the top wall over eps) or by gamma h
+along x (C33 = the change of the shear force per unit area over gamma), the
+grains take the positions of least elastic energy, K u = f.  The box is
+periodic along x with length `width`; the 2D layer counts as one diameter
+(unit) thick, as in paper 003.  The prestress (geometric) term f_n / r of
+the stiffness is left out: it is of relative size overlap / radius, 1e-3 at
+p = 1e-4.  numpy and scipy only."""
+import numpy as np
+import scipy.sparse
+import scipy.sparse.linalg
+
+
+def _contact_geometry(grains, contacts, width, height):
+    """normals (from i to j, or to the wall) and lever arms of every contact,
+    with the index of each grain and the wall (0: bottom, 1: top) of the
+    grain-wall contacts"""
+    index = {int(t): k for k, t in enumerate(grains["id"])}
+    x, y, radius = grains["x"], grains["y"], grains["radius"]
+    ci = np.array([index[int(t)] for t in contacts["c0"]])
+    wall = contacts["c1"].astype(int) == 0
+    cj = np.array([index.get(int(t), -1) for t in contacts["c1"]])
+    normal = np.zeros((len(ci), 2))
+    arm_j = np.zeros(len(ci))
+    grain = ~wall
+    dx = x[cj[grain]] - x[ci[grain]]
+    dx -= width * np.round(dx / width)    # periodic along x
+    dy = y[cj[grain]] - y[ci[grain]]
+    length = np.hypot(dx, dy)
+    normal[grain, 0], normal[grain, 1] = dx / length, dy / length
+    arm_j[grain] = radius[cj[grain]]
+    top = wall & (y[ci] > 0.5 * height)
+    normal[wall, 1] = np.where(top[wall], 1.0, -1.0)
+    which_wall = np.where(top, 1, 0)
+    return ci, cj, wall, which_wall, normal, radius[ci], arm_j
+
+
+def network_response(grains, contacts, width, height, wall_motion, eta=1.0):
+    """the force (x, y) of the grains on the top wall per unit area after the
+    top wall moved by wall_motion = (ux, uy), the bottom wall and the
+    periodic box staying put; grains: dict with id, x, y, radius; contacts:
+    dict with c0 (i), c1 (j, 0 for a wall), c3 (k_n)"""
+    ci, cj, wall, which_wall, normal, arm_i, arm_j = _contact_geometry(grains, contacts, width, height)
+    kn = np.asarray(contacts["c3"], dtype=float)
+    tangent = np.column_stack((-normal[:, 1], normal[:, 0]))
+    ngrains = len(grains["id"])
+    ncontacts = len(ci)
+    top_motion = np.asarray(wall_motion, dtype=float)
+
+    # rows: the normal and tangential relative displacements of each contact,
+    # s = B u + s_wall (j minus i at the contact point; rotation theta about z
+    # moves the contact point of i by r_i theta t and that of j by -r_j theta t)
+    rows, cols, vals = [], [], []
+    prescribed = np.zeros(2 * ncontacts)
+    for c in range(ncontacts):
+        n, t = normal[c], tangent[c]
+        i = ci[c]
+        for r, direction in ((2 * c, n), (2 * c + 1, t)):
+            rows += [r, r]
+            cols += [3 * i, 3 * i + 1]
+            vals += [-direction[0], -direction[1]]
+        rows.append(2 * c + 1)
+        cols.append(3 * i + 2)
+        vals.append(-arm_i[c])
+        if wall[c]:
+            if which_wall[c] == 1:
+                prescribed[2 * c] = top_motion @ n
+                prescribed[2 * c + 1] = top_motion @ t
+            continue
+        j = cj[c]
+        for r, direction in ((2 * c, n), (2 * c + 1, t)):
+            rows += [r, r]
+            cols += [3 * j, 3 * j + 1]
+            vals += [direction[0], direction[1]]
+        rows.append(2 * c + 1)
+        cols.append(3 * j + 2)
+        vals.append(-arm_j[c])
+    B = scipy.sparse.csr_matrix((vals, (rows, cols)), shape=(2 * ncontacts, 3 * ngrains))
+    springs = np.empty(2 * ncontacts)
+    springs[0::2], springs[1::2] = kn, eta * kn
+    K = (B.T @ scipy.sparse.diags(springs) @ B).tocsc()
+    load = -(B.T @ (springs * prescribed))
+    # grains without stiffness (rattlers) and floppy directions: a tiny
+    # regularisation keeps K invertible and leaves them unloaded
+    diagonal = K.diagonal()
+    scale = np.median(diagonal[diagonal > 0]) if np.any(diagonal > 0) else 1.0
+    K = K + scipy.sparse.identity(3 * ngrains, format="csc") * (1e-12 * scale)
+    u = scipy.sparse.linalg.spsolve(K, load)
+    stretch = B @ u + prescribed
+    on_top = wall & (which_wall == 1)
+    # force of grain i on the wall (j): -(k_n s_n n + k_t s_t t), per unit area
+    force = -(springs[0::2][on_top, None] * stretch[0::2][on_top, None] * normal[on_top]
+              + springs[1::2][on_top, None] * stretch[1::2][on_top, None] * tangent[on_top])
+    return force.sum(axis=0) / width
+
+
+def network_moduli(grains, contacts, width, height, eta=1.0, strain=1e-6):
+    """C22 (top wall pushed down by strain * height) and C33 (top wall slid
+    by strain * height along x) of the network; linear, so any small strain
+    gives the same moduli"""
+    push = network_response(grains, contacts, width, height, (0.0, -strain * height), eta)
+    slide = network_response(grains, contacts, width, height, (strain * height, 0.0), eta)
+    return {"C22": float(push[1] / strain), "C33": float(-slide[0] / strain)}

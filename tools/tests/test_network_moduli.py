@@ -1,0 +1,102 @@
+"""tools/network_moduli.py against elastic moduli known in closed form: a
+column of grains (springs in series) and the triangular lattice (Lame
+constants of central and tangential springs)"""
+import math
+
+import numpy as np
+import pytest
+
+import network_moduli
+
+
+def packing(ids, x, y, bonds, wall_contacts, k, k_wall):
+    """grains of radius 1/2 and the contact table of fix acoustic/mindlin's
+    local array (c0 = i, c1 = j or 0 for a wall, c3 = k_n)"""
+    grains = {"id": np.array(ids, float), "x": np.array(x, float), "y": np.array(y, float),
+              "radius": np.full(len(ids), 0.5)}
+    ci = [i for i, _ in bonds] + list(wall_contacts)
+    cj = [j for _, j in bonds] + [0] * len(wall_contacts)
+    kn = [k] * len(bonds) + [k_wall] * len(wall_contacts)
+    contacts = {"c0": np.array(ci, float), "c1": np.array(cj, float), "c3": np.array(kn, float)}
+    return grains, contacts
+
+
+def column(n, k, width):
+    """n touching grains on a vertical line between walls at y = 0 and y = n"""
+    ids = list(range(1, n + 1))
+    bonds = [(i, i + 1) for i in range(1, n)]
+    return packing(ids, [1.0] * n, [0.5 + i for i in range(n)], bonds, [1, n], k, k), float(n)
+
+
+def triangular_lattice(nx, rows, k, k_wall):
+    """rows of nx grains (spacing 1, periodic along x), parallel to the walls,
+    the bottom and top rows touching them; returns the packing, its width
+    and height and the distance between the centres of the outer rows"""
+    def tag(r, c):
+        return r * nx + (c % nx) + 1
+    ids, x, y, bonds = [], [], [], []
+    for r in range(rows):
+        for c in range(nx):
+            ids.append(tag(r, c))
+            x.append(c + 0.5 * (r % 2))
+            y.append(0.5 + r * math.sqrt(3.0) / 2.0)
+            bonds.append((tag(r, c), tag(r, c + 1)))
+            if r + 1 < rows:
+                for above in ((c - 1, c) if r % 2 == 0 else (c, c + 1)):
+                    bonds.append((tag(r, c), tag(r + 1, above)))
+    walls = [tag(0, c) for c in range(nx)] + [tag(rows - 1, c) for c in range(nx)]
+    span = (rows - 1) * math.sqrt(3.0) / 2.0
+    return packing(ids, x, y, bonds, walls, k, k_wall), float(nx), span + 1.0, span
+
+
+def test_column_is_springs_in_series():
+    n, k, width = 7, 3.0, 2.0
+    (grains, contacts), height = column(n, k, width)
+    moduli = network_moduli.network_moduli(grains, contacts, width, height)
+    # n + 1 springs in series: force k / (n + 1) * eps h on the width
+    assert moduli["C22"] == pytest.approx(k * height / ((n + 1) * width), rel=1e-9)
+
+
+@pytest.mark.parametrize("eta", [0.0, 0.5, 1.0])
+def test_triangular_lattice_longitudinal_modulus(eta):
+    # C22 = (3 sqrt(3) / 4) k (1 + eta / 3) between rigid walls (k_wall >> k),
+    # over the strain between the centres of the outer rows
+    k = 2.0
+    (grains, contacts), width, height, span = triangular_lattice(4, 30, k, 1e9 * k)
+    moduli = network_moduli.network_moduli(grains, contacts, width, height, eta=eta)
+    expected = 3.0 * math.sqrt(3.0) / 4.0 * k * (1.0 + eta / 3.0)
+    assert moduli["C22"] * span / height == pytest.approx(expected, rel=1e-5)
+
+
+def test_triangular_lattice_shear_modulus_converges():
+    # C33 = (sqrt(3) / 4) k (1 + eta): the walls pin the contact points of the
+    # outer rows, a boundary layer whose weight falls as 1 / rows
+    k, eta = 1.0, 1.0
+    expected = math.sqrt(3.0) / 4.0 * k * (1.0 + eta)
+    errors = []
+    for rows in (20, 40, 80):
+        (grains, contacts), width, height, _ = triangular_lattice(4, rows, k, 1e9 * k)
+        c33 = network_moduli.network_moduli(grains, contacts, width, height, eta=eta)["C33"]
+        errors.append(abs(c33 / expected - 1.0))
+    assert errors[-1] < 0.005
+    assert errors[0] / errors[1] == pytest.approx(2.0, rel=0.15)
+    assert errors[1] / errors[2] == pytest.approx(2.0, rel=0.15)
+
+
+def test_frictionless_walls_carry_no_shear():
+    (grains, contacts), width, height, _ = triangular_lattice(4, 10, 1.0, 1e3)
+    assert network_moduli.network_moduli(grains, contacts, width, height, eta=0.0)["C33"] == 0.0
+
+
+def test_linear_and_blind_to_rattlers():
+    (grains, contacts), width, height, _ = triangular_lattice(4, 10, 1.0, 10.0)
+    small = network_moduli.network_moduli(grains, contacts, width, height, strain=1e-7)
+    large = network_moduli.network_moduli(grains, contacts, width, height, strain=1e-3)
+    assert large["C22"] == pytest.approx(small["C22"], rel=1e-9)
+    assert large["C33"] == pytest.approx(small["C33"], rel=1e-9)
+    # a grain without contacts (a rattler) changes nothing
+    with_rattler = {key: np.append(value, extra) for (key, value), extra in
+                    zip(grains.items(), (999.0, 2.2, 3.3, 0.4))}
+    moduli = network_moduli.network_moduli(with_rattler, contacts, width, height)
+    assert moduli["C22"] == pytest.approx(small["C22"], rel=1e-9)
+    assert moduli["C33"] == pytest.approx(small["C33"], rel=1e-9)
