@@ -13,7 +13,12 @@
         Fig. 8: t_con against theta; TABLE lines "label theta t_con"
     avalanche_figures.py chains RUN.dump RUN.contacts [--frame K] -o fig10.png
         Fig. 10: force chains, width proportional to f_n, colour 1 - mu*/mu
+    avalanche_figures.py calibration calibration.json -o calibration.png
+        the calibration scan of examples/avalanche/calibrate.py: fraction of
+        contacts with mu*/mu < 0.5 against U0/d, kappa_scale, C_mu and the
+        damping ratio for both sources; sound speed and highest mode against kappa_scale
 """
+import json
 import argparse
 import os
 import sys
@@ -176,6 +181,40 @@ def fig_chains(a):
     return fig
 
 
+def fig_calibration(a):
+    """The calibration scan (examples/avalanche/calibrate.py)."""
+    results = json.load(open(a.results))
+    labels = {"U0": "$U_0/d$", "kappa": "kappa_scale", "cmu": r"$C_\mu$", "zeta": r"damping ratio $\zeta$"}
+    fig, axes = plt.subplots(2, 3, figsize=(12, 7))
+    for ax, name in zip(axes.flat, ("U0", "kappa", "cmu", "zeta")):
+        for source, style in (("bottom", "o-"), ("base", "s--")):
+            rows = results["scans"].get(f"{source}:{name}", [])
+            ax.plot([r["value"] for r in rows], [r["fraction_below_half"] for r in rows], style,
+                    label={"bottom": "grains on the base, normal (paper 000)", "base": "rough base"}[source])
+        ax.axvline(results["reference"][name], color="0.6", lw=0.8)
+        if name in ("U0", "kappa"):
+            ax.set_xscale("log")
+        ax.set_xlabel(labels[name])
+        ax.set_ylabel(r"fraction of contacts with $\mu^*/\mu < 0.5$")
+        ax.set_ylim(0.0, 1.0)
+    axes.flat[0].legend(fontsize=8)
+    rows = results["spectrum_and_speed"]
+    kappa = [r["kappa"] for r in rows]
+    ax = axes.flat[4]
+    ax.loglog(kappa, [r["speed"] for r in rows], "o-", label="time-of-flight speed (m/s)")
+    ax.axhline(10.0, color="C3", lw=0.8, label="paper 000: c = 10 m/s")
+    ax.set_xlabel("kappa_scale")
+    ax.legend(fontsize=8)
+    ax = axes.flat[5]
+    ax.loglog(kappa, [r["highest_mode"] / 1e3 for r in rows], "o-", label="highest mode (kHz)")
+    ax.axhline(results["freq"] / 1e3, color="C3", lw=0.8, label="drive")
+    ax.axhline(75.0, color="0.5", ls=":", lw=0.8, label="paper 000 Fig. 3: 75 kHz")
+    ax.set_xlabel("kappa_scale")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="cmd", required=True)
@@ -197,12 +236,14 @@ def main(argv=None):
     ch.add_argument("dump")
     ch.add_argument("contacts")
     ch.add_argument("--frame", type=int, default=-1)
-    for q in (m, s, t, c, ch):
+    cal = sub.add_parser("calibration")
+    cal.add_argument("results")
+    for q in (m, s, t, c, ch, cal):
         q.add_argument("-o", "--output", required=True)
         q.add_argument("--dpi", type=int, default=110)
     a = p.parse_args(argv)
     fig = {"modes": fig_modes, "sigma": fig_sigma, "thetam": fig_thetam, "tcon": fig_tcon,
-           "chains": fig_chains}[a.cmd](a)
+           "chains": fig_chains, "calibration": fig_calibration}[a.cmd](a)
     fig.savefig(a.output, dpi=a.dpi, bbox_inches="tight")
     print(f"wrote {a.output}")
     return 0
