@@ -5,7 +5,8 @@
 # Usage: examples/avalanche/run.sh BUILD_DIR   (./run.sh demo passes it)
 # Environment: AVALANCHE_NP (MPI ranks, default 2), AVALANCHE_H (H/d, default 6),
 #              AVALANCHE_L (L/d, default 80), AVALANCHE_THETA0 (first angle, default 10),
-#              AVALANCHE_OUT (output directory, default examples/avalanche/out/demo)
+#              AVALANCHE_OUT (output directory, default examples/avalanche/out/demo),
+#              AVALANCHE_SOURCE (bottom: paper 000's source, default; base: the rough base)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${1:-$here/../../build}
@@ -17,6 +18,7 @@ H=${AVALANCHE_H:-6}
 L=${AVALANCHE_L:-80}
 theta0=${AVALANCHE_THETA0:-10}
 kappa=0.3     # kappa_scale: puts 70 kHz in the top of the network's spectrum (RESULTS.md)
+source=${AVALANCHE_SOURCE:-bottom}
 out=${AVALANCHE_OUT:-$here/out/demo}
 mkdir -p "$out"
 cd "$out"
@@ -27,7 +29,7 @@ if mpirun --version 2>/dev/null | grep -q "Open MPI"; then mpi+=(--oversubscribe
 start=$SECONDS
 stamp() { while IFS= read -r line; do printf '[%4ds] %s\n' $((SECONDS - start)) "$line"; done; }
 
-echo "avalanche demo: H = $H d, L = $L d, periodic, $np MPI ranks, outputs in $out"
+echo "avalanche demo: H = $H d, L = $L d, periodic, source $source, $np MPI ranks, outputs in $out"
 "${mpi[@]}" "$lmp" -nocite -in "$here/in.deposit" -var dir "$here" -var H "$H" -var L "$L" \
   -var out deposit.restart -log log.deposit -echo none -screen none
 grep '^deposit:' log.deposit | stamp
@@ -36,7 +38,7 @@ for f in 0 70e3; do
   rm -f "log.$tag" "$tag".*       # no stale log for the progress reader below
   # progress: the print lines of the deck, as they come
   "${mpi[@]}" "$lmp" -nocite -in "$here/in.avalanche" -var dir "$here" -var restart deposit.restart \
-    -var tag "$tag" -var freq "$f" -var kappa "$kappa" -var theta0 "$theta0" -var thetamax 30 \
+    -var tag "$tag" -var freq "$f" -var kappa "$kappa" -var source "$source" -var theta0 "$theta0" -var thetamax 30 \
     -var dumpevery 20 -var dumplocal 1 -log "log.$tag" -echo none -screen none &
   pid=$!
   ( tail -n +1 --pid=$pid -F "log.$tag" 2>/dev/null | grep --line-buffered '^angle\|^avalanche' | stamp ) &

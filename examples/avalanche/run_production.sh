@@ -7,6 +7,8 @@
 #   AVALANCHE_TCON_H (default 6): H/d of the t_con runs ("" to skip)
 #   AVALANCHE_FREE (default 1): 1 runs the free-ends variant
 #   AVALANCHE_OUT (default out/prod): output directory
+#   AVALANCHE_SOURCE (default bottom): source of in.avalanche, bottom (paper 000)
+#     or base (the rough base; the source of the tables of RESULTS.md)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${1:-$here/../../build}; shift || true
@@ -16,6 +18,7 @@ heights=("$@"); [ ${#heights[@]} -gt 0 ] || heights=(3 6 8.7 11.4 14.4)
 Lthin=${AVALANCHE_L:-80}    # L/d for H <= 6 d
 Lthick=${AVALANCHE_L_THICK:-40}   # L/d for H > 6 d
 kappa=0.3
+source=${AVALANCHE_SOURCE:-bottom}
 tcon_h=${AVALANCHE_TCON_H-6}
 free=${AVALANCHE_FREE:-1}
 if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
@@ -37,7 +40,7 @@ for H in "${heights[@]}"; do
     # first tested angle 10 deg; 4 deg for thick layers at 70 kHz, which flow below 10 deg
     theta0=$(awk -v h="$H" -v f="$f" 'BEGIN{print (h > 10 && f > 0 ? 4 : 10)}')
     lmprun -in "$here/in.avalanche" -var dir "$here" -var restart deposit.restart -var tag "$tag" \
-      -var freq "$f" -var kappa "$kappa" -var theta0 "$theta0" -var thetamax 30 -var dumpevery 20 \
+      -var freq "$f" -var kappa "$kappa" -var source "$source" -var theta0 "$theta0" -var thetamax 30 -var dumpevery 20 \
       -var dumplocal 1 -log "log.$tag"
     echo "H$H $(grep 'theta_m =' "log.$tag" | sed 's/^avalanche //')  wall $((SECONDS - t1)) s" >> "$summary"
   done
@@ -55,7 +58,7 @@ if [ -n "$tcon_h" ] && [ -d "$top/H$tcon_h" ]; then
       th=$(awk -v a="$tm" -v k="$k" 'BEGIN{printf "%.1f", a + k}')
       t1=$SECONDS
       lmprun -in "$here/in.avalanche" -var dir "$here" -var restart "$tag.static.restart" -var pre 0 \
-        -var tag "tcon_${tag}_$th" -var freq "$f" -var kappa "$kappa" -var theta0 "$th" -var thetamax "$th" \
+        -var tag "tcon_${tag}_$th" -var freq "$f" -var kappa "$kappa" -var source "$source" -var theta0 "$th" -var thetamax "$th" \
         -var tfollow 1.2 -var dumpevery 0 -log "log.tcon_${tag}_$th"
       echo "H$tcon_h tcon $(grep 'theta_m =' "log.tcon_${tag}_$th" | sed 's/^avalanche //')  wall $((SECONDS - t1)) s" >> "$summary"
     done
@@ -70,7 +73,7 @@ if [ "$free" = 1 ]; then
   for f in 0 70e3; do
     tag=f${f%e3}; t1=$SECONDS
     lmprun -in "$here/in.avalanche" -var dir "$here" -var restart deposit.restart -var tag "$tag" \
-      -var freq "$f" -var kappa "$kappa" -var theta0 10 -var thetamax 30 -var obslo 0.4 -var obshi 0.6 \
+      -var freq "$f" -var kappa "$kappa" -var source "$source" -var theta0 10 -var thetamax 30 -var obslo 0.4 -var obshi 0.6 \
       -var dumpevery 20 -log "log.$tag"
     echo "free_H6 $(grep 'theta_m =' "log.$tag" | sed 's/^avalanche //')  wall $((SECONDS - t1)) s" >> "$summary"
   done
