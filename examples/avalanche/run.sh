@@ -6,7 +6,10 @@
 # Environment: AVALANCHE_NP (MPI ranks, default 2), AVALANCHE_H (H/d, default 6),
 #              AVALANCHE_L (L/d, default 80), AVALANCHE_THETA0 (first angle, default 10),
 #              AVALANCHE_OUT (output directory, default examples/avalanche/out/demo),
-#              AVALANCHE_SOURCE (bottom: paper 000's source, default; base: the rough base)
+#              AVALANCHE_SOURCE (bottom: paper 000's source, default; base: the rough base),
+#              AVALANCHE_TFOLLOW (s a rearrangement is followed after the 0.1 s window,
+#              default 0.3; the deck's default and paper 000's is 1.2),
+#              AVALANCHE_TSETTLE (longest hold for rest after the pre-ramp, s, default 0.2)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${1:-$here/../../build}
@@ -19,6 +22,8 @@ L=${AVALANCHE_L:-80}
 theta0=${AVALANCHE_THETA0:-10}
 kappa=0.3     # kappa_scale: puts 70 kHz in the top of the network's spectrum (RESULTS.md)
 source=${AVALANCHE_SOURCE:-bottom}
+tfollow=${AVALANCHE_TFOLLOW:-0.3}   # shorter than paper 000's 1.2 s: the demo stays at about 2 minutes
+tsettle=${AVALANCHE_TSETTLE:-0.2}
 out=${AVALANCHE_OUT:-$here/out/demo}
 mkdir -p "$out"
 cd "$out"
@@ -38,7 +43,7 @@ for f in 0 70e3; do
   rm -f "log.$tag" "$tag".*       # no stale log for the progress reader below
   # progress: the print lines of the deck, as they come
   "${mpi[@]}" "$lmp" -nocite -in "$here/in.avalanche" -var dir "$here" -var restart deposit.restart \
-    -var tag "$tag" -var freq "$f" -var kappa "$kappa" -var source "$source" -var theta0 "$theta0" -var thetamax 30 \
+    -var tag "$tag" -var freq "$f" -var kappa "$kappa" -var source "$source" -var tfollow "$tfollow" -var tsettle "$tsettle" -var theta0 "$theta0" -var thetamax 30 \
     -var dumpevery 20 -var dumplocal 1 -log "log.$tag" -echo none -screen none &
   pid=$!
   ( tail -n +1 --pid=$pid -F "log.$tag" 2>/dev/null | grep --line-buffered '^angle\|^avalanche' | stamp ) &
