@@ -188,21 +188,24 @@ class AngleResult:
 
 
 def classify_angle(time, ratio, sigma1, sigma2, mobile, dt=1e-3, twin=0.1, thold=0.01,
-                   eps_e=EPS_E, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, fspread=0.5, theta=np.nan):
+                   eps_e=EPS_E, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, fspread=0.5, theta=np.nan, tfollow=1.2):
     """Paper 000's test at one angle, on samples taken every dt after the tilt.
 
     Same rules as in.avalanche: uniform as soon as sigma_1 < eps1, sigma_2 < eps2
     and more than fspread of the grains mobile hold for thold (t_con = time of the
     first of those samples, measured from the tilt); static (stable, or stopped
     if E_k/E_t exceeded eps_E after the first thold) once the window twin is over
-    and E_k/E_t < eps_E held for thold; local if still moving at the end of the
-    window with at most fspread of the grains mobile; partial otherwise.
+    and E_k/E_t < eps_E held for thold; a rearrangement is followed until it
+    arrests or twin + tfollow have passed: local if still moving then with at
+    most fspread of the grains mobile; partial otherwise (also a series that
+    ends earlier, as the last angle of an interrupted run).
     `time` is the sample time measured from the tilt (first sample at dt).
     """
     time, ratio = np.asarray(time, float), np.asarray(ratio, float)
     sigma1, sigma2, mobile = (np.asarray(a, float) for a in (sigma1, sigma2, mobile))
     nhold = int(round(thold / dt))
     nwin = int(round(twin / dt))
+    ntot = int(round((twin + tfollow) / dt))
     quiet = runs_of(ratio < eps_e)
     uniform = runs_of((sigma1 < eps1) & (sigma2 < eps2) & (mobile > fspread))
     rmax = 0.0
@@ -215,7 +218,7 @@ def classify_angle(time, ratio, sigma1, sigma2, mobile, dt=1e-3, twin=0.1, thold
             return AngleResult(theta, "uniform", time[k], time[first] - dt, rmax)
         if ic >= nwin and quiet[k] >= nhold:
             return AngleResult(theta, "stable" if rmax < eps_e else "stopped", time[k], np.nan, rmax)
-        if ic == nwin and mobile[k] < fspread:
+        if ic == ntot and mobile[k] < fspread:
             return AngleResult(theta, "local", time[k], np.nan, rmax)
     return AngleResult(theta, "partial", time[-1] if len(time) else 0.0, np.nan, rmax)
 
@@ -309,6 +312,8 @@ def main(argv=None):
     r.add_argument("series")
     r.add_argument("--theta0", type=float, default=None, help="first tested angle (skips the pre-ramp)")
     r.add_argument("--epsE", type=float, default=EPS_E)
+    r.add_argument("--tfollow", type=float, default=1.2, help="s a rearrangement is followed after the window "
+                   "(in.avalanche's tfollow; the demo uses 0.3)")
     sp = sub.add_parser("spectrum", help="eigenfrequencies of the contact network")
     sp.add_argument("dump")
     sp.add_argument("contacts")
@@ -320,7 +325,7 @@ def main(argv=None):
             o = frame_observables(fr, g=a.g, obs=a.obs)
             print(f"{o['timestep']} {o['theta']:g} {o['sigma1']:.4g} {o['sigma2']:.4g} {o['ratio']:.4g}")
     elif a.cmd == "ramp":
-        res = ramp_results(read_series(a.series), first_theta=a.theta0, eps_e=a.epsE)
+        res = ramp_results(read_series(a.series), first_theta=a.theta0, eps_e=a.epsE, tfollow=a.tfollow)
         for x in res:
             print(f"theta {x.theta:5.2f}  {x.state:8s} after {x.duration:.3f} s  max Ek/Et {x.max_ratio:.2e}"
                   + (f"  t_con {x.t_con:.3f} s" if x.state == "uniform" else ""))

@@ -111,9 +111,19 @@ def test_rearrangement_that_stops():
 
 
 def test_motion_at_the_end_of_the_window():
-    ratio = np.full(600, 1e-9)
-    ratio[95:] = 1e-5                     # still moving at 0.1 s
-    assert classify(600, ratio=ratio, mobile=np.full(600, 0.1)).state == "local"
+    ratio = np.full(1300, 1e-9)
+    ratio[95:] = 1e-5                     # still moving at 0.1 s, and at 0.1 + 1.2 s
+    assert classify(1300, ratio=ratio, mobile=np.full(1300, 0.1)).state == "local"
+    # followed at the same angle: no verdict before 0.1 s + tfollow
+    assert classify(600, ratio=ratio[:600], mobile=np.full(600, 0.1)).state == "partial"
+    time, s = samples(400, ratio=ratio[:400], mobile=np.full(400, 0.1))
+    r = av.classify_angle(time, s["ratio"], s["sigma1"], s["sigma2"], s["mobile"], dt=DT, tfollow=0.3)
+    assert r.state == "local" and r.duration == pytest.approx(0.4)
+    # a local rearrangement that arrests after the window is followed to its end
+    ratio = np.full(1300, 1e-9)
+    ratio[95:400] = 1e-5
+    r = classify(1300, ratio=ratio, mobile=np.full(1300, 0.1))
+    assert r.state == "stopped" and r.duration == pytest.approx(0.410)
     # a flow that spreads but arrests at 0.3 s
     ratio = np.full(600, 1e-3)
     ratio[300:] = 1e-9
@@ -167,7 +177,8 @@ def test_ramp_and_theta_m(tmp_path):
                 rows.append([t, theta, 1e-2, 0.1 if unif else 3, 0.5 if unif else 3, 0.1, 0.05, 0.95, 1, 0])
     path = tmp_path / "run.series"
     np.savetxt(path, rows, header="time theta ...")
-    res = av.ramp_results(av.read_series(path), first_theta=10.0)
+    # local after the window alone (tfollow 0: the series has 0.1 s per angle)
+    res = av.ramp_results(av.read_series(path), first_theta=10.0, tfollow=0.0)
     assert [r.state for r in res] == ["stable", "local", "uniform"]
     tm, tc = av.theta_m(res)
     assert tm == 11.0 and tc == pytest.approx(0.020)
