@@ -230,10 +230,14 @@ def main():
             return value
         return fmt.format(value)
 
-    lines.append("Table I (bulk of the H = 25 packings; paper: 30 samples per pressure)")
-    lines.append("")
-    lines.append("| p | source | samples | Φ2 | Φ3 | Φ3* | z* | f0 | ⟨N⟩/p | Z(2) | Z(3) |")
-    lines.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    def table_head(titles, columns):
+        """title lines, a blank line, the header and separator of a markdown table"""
+        lines.extend(titles + [""])
+        lines.append("| " + " | ".join(columns) + " |")
+        lines.append("|" + "---|" * len(columns))
+
+    table_head(["Table I (bulk of the H = 25 packings; paper: 30 samples per pressure)"],
+               ["p", "source", "samples", "Φ2", "Φ3", "Φ3*", "z*", "f0", "⟨N⟩/p", "Z(2)", "Z(3)"])
     for p in pressures:
         e = results["pressures"][f"{p:g}"]
         if p in PAPER_TABLE_I:
@@ -241,11 +245,9 @@ def main():
         lines.append(f"| {p:g} | ACOUSTIC | {e['tall_samples']} | " + " | ".join(
             cell(e, k) for k in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3")) + " |")
     lines.append("")
-    lines.append("Table II (H = 25 packings whose response stayed linear; mean ± standard deviation;")
-    lines.append("moduli samples: linear in compression and stretch / in shear)")
-    lines.append("")
-    lines.append("| p | source | σ1/σ2 | p_peak/p | moduli samples | C11 | C12 | C12 (from ε11) | C22 | C33 |")
-    lines.append("|---|---|---|---|---|---|---|---|---|---|")
+    table_head(["Table II (H = 25 packings whose response stayed linear; mean ± standard deviation;",
+                "moduli samples: linear in compression and stretch / in shear)"],
+               ["p", "source", "σ1/σ2", "p_peak/p", "moduli samples", "C11", "C12", "C12 (from ε11)", "C22", "C33"])
     for p in pressures:
         e = results["pressures"][f"{p:g}"]
         if p in PAPER_TABLE_II:
@@ -257,18 +259,15 @@ def main():
             lines.append(f"| {p:g} | ACOUSTIC, network | - | - | {e['tall_samples']} | - | - | - | "
                          f"{cell(e, 'C22_network')} | {cell(e, 'C33_network')} |")
     lines.append("")
-    lines.append("DEM moduli over network moduli, packing by packing (where the DEM response stayed linear)")
-    lines.append("")
-    lines.append("| p | C22 (DEM / network) | C33 (DEM / network) |")
-    lines.append("|---|---|---|")
+    table_head(["DEM moduli over network moduli, packing by packing (where the DEM response stayed linear)"],
+               ["p", "C22 (DEM / network)", "C33 (DEM / network)"])
     for p in pressures:
         e = results["pressures"][f"{p:g}"]
         lines.append(f"| {p:g} | {cell(e, 'C22_dem_over_network')} | {cell(e, 'C33_dem_over_network')} |")
     lines.append("")
-    lines.append("Speeds and the coherent peak (c_tof from the H = 8 and H = 25 packings of each seed)")
-    lines.append("")
-    lines.append("| p | pairs | c_tof (10 %) | c_tof (peak) | c_tof (zero) | c_ℓ | c_t | c_tof/c_ℓ | paper c_ℓ (Table II) | γ (L 8-25) | α (L 8-25) |")
-    lines.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    table_head(["Speeds and the coherent peak (c_tof from the H = 8 and H = 25 packings of each seed)"],
+               ["p", "pairs", "c_tof (10 %)", "c_tof (peak)", "c_tof (zero)", "c_ℓ", "c_t", "c_tof/c_ℓ",
+                "paper c_ℓ (Table II)", "γ (L 8-25)", "α (L 8-25)"])
     for p in pressures:
         e = results["pressures"][f"{p:g}"]
         paper_c_l = "-"
