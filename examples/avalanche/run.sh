@@ -9,7 +9,8 @@
 #              AVALANCHE_SOURCE (bottom: paper 000's source, default; base: the rough base),
 #              AVALANCHE_TFOLLOW (s a rearrangement is followed after the 0.1 s window,
 #              default 0.3; the deck's default and paper 000's is 1.2),
-#              AVALANCHE_TSETTLE (longest hold for rest after the pre-ramp, s, default 0.2)
+#              AVALANCHE_TSETTLE (longest hold for rest after the pre-ramp, s, default 0.2),
+#              AVALANCHE_SEED (seed of the deposit, default in.deposit's)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${1:-$here/../../build}
@@ -36,7 +37,7 @@ stamp() { while IFS= read -r line; do printf '[%4ds] %s\n' $((SECONDS - start)) 
 
 echo "avalanche demo: H = $H d, L = $L d, periodic, source $source, $np MPI ranks, outputs in $out"
 "${mpi[@]}" "$lmp" -nocite -in "$here/in.deposit" -var dir "$here" -var H "$H" -var L "$L" \
-  -var out deposit.restart -log log.deposit -echo none -screen none
+  -var out deposit.restart -log log.deposit -echo none -screen none ${AVALANCHE_SEED:+-var seed "$AVALANCHE_SEED"}
 grep '^deposit:' log.deposit | stamp
 for f in 0 70e3; do
   tag=f${f%e3}
