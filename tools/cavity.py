@@ -1,0 +1,542 @@
+"""Analysis of granular lid-driven cavity runs (paper 004, Kneib et al., PRE 96,
+042906, 2017; examples/cavity).
+
+Reads the standard LAMMPS outputs of a cavity run and turns them into paper
+004's quantities:
+
+  files       read_ave_time (fix ave/time, scalar mode: the wall forces F and
+              F_1 .. F_10), read_ave_chunk and time_average_chunks (fix
+              ave/chunk on a bin/2d grid: the mean velocity field), read_dump
+              (text dump custom or local with many snapshots: the grain-wall
+              contacts);
+  Eq. 1-3     pressure_from_NP, velocity_from_NU, inertial_number (I_M) and
+              inertial_number_from_NP_NU;
+  Eq. 4       mean_force_model and fit_mean_force (F/(PLd) against I_M);
+  Fig. 3a     stream_function and vortex_centre (ell/L, the distance of the
+              vortex centre from the right wall over L);
+  Eq. 6       autocorrelation, correlation_time and portion_correlation_times
+              (Delta t_c at C = 0.15, Figs. 8-10);
+  Eq. 7       trunc_lognormal_pdf, trunc_lognormal_cdf, sample_trunc_lognormal,
+              trunc_lognormal_loglik and fit_trunc_lognormal (maximum
+              likelihood, Nelder-Mead, Figs. 12-14);
+  PDFs        normalised_pdf (density of values / mean), mean_portion_pdf (the
+              mean over portions 3..9 of Fig. 14b);
+  wall        portion_forces and portion_force_series (force on n equal
+              portions of the wall, bottom first, from contact positions);
+  Sec. II     volume_fraction_3d (Phi_3D = 2/3 Phi_2D).
+
+Units are those of the run (SI for examples/cavity).  Typical use:
+
+    import cavity
+    wall = cavity.read_ave_time("run.wall.txt")          # F, F_1 .. F_10
+    C = cavity.autocorrelation(wall["F_5"], 2000)
+    dtc = cavity.correlation_time(C, dt_record)
+    flow, counts = cavity.time_average_chunks(cavity.read_ave_chunk("run.flow"))
+    x0, y0, ell_L = cavity.vortex_centre(flow["Coord1"], flow["Coord2"],
+                                         flow["vx"], flow["vy"], L)
+    mu, sigma, f0 = cavity.fit_trunc_lognormal(F / F.mean())
+
+numpy and scipy only; figures are in cavity_figures.py.
+"""
+import math
+
+import numpy as np
+from scipy import optimize, special
+
+PAPER_EQ4 = (0.53, 0.86, 0.02)    # paper 004 Fig. 3b: r1, r2, I_M^0 of Eq. 4
+THRESHOLD = 0.15                  # paper 004 Eq. 6: C(Delta t_c) = 0.15
+INTEGER_COLUMNS = ("id", "type", "mol", "proc", "procp1")
+
+
+# ---------------------------------------------------------------------------
+# files
+
+def read_ave_time(path):
+    """A fix ave/time file in scalar mode: dict column name -> array.
+
+    Lines starting with '#' are comments; the last comment line before the
+    first data line names the columns ("# TimeStep name1 name2 ..."; a
+    title2 of the user's is taken as it is).  Extra header words beyond the
+    number of data columns are dropped, missing ones are named c<k>.  The
+    first column is also available as 'TimeStep' (integers)."""
+    with open(path) as handle:
+        lines = handle.read().splitlines()
+    header, rows = None, []
+    for line in lines:
+        if line.startswith("#"):
+            if not rows:
+                header = line
+        elif line.strip():
+            rows.append(line)
+    names = header.lstrip("#").split() if header else []
+    if not rows:
+        return {name: np.zeros(0) for name in names} | {"TimeStep": np.zeros(0, dtype=np.int64)}
+    data = np.loadtxt(rows, ndmin=2, comments=None)
+    ncol = data.shape[1]
+    names = names[:ncol] + [f"c{k}" for k in range(len(names), ncol)]
+    columns = {name: data[:, k] for k, name in enumerate(names)}
+    columns["TimeStep"] = np.rint(data[:, 0]).astype(np.int64)
+    return columns
+
+
+def read_ave_chunk(path):
+    """A fix ave/chunk file: list of (timestep, dict column -> array).
+
+    Format: three comment lines, the third naming the columns of the rows
+    ("# Chunk Coord1 Coord2 Ncount name ..."; "# Chunk OrigID ..." with
+    compress yes), then blocks of a line "timestep nchunks total-count"
+    followed by nchunks rows.  'Chunk' (and 'OrigID') are integers."""
+    with open(path) as handle:
+        lines = handle.read().splitlines()
+    comments = [line for line in lines if line.startswith("#")]
+    if len(comments) < 3:
+        raise ValueError(f"{path}: expected the 3 comment lines of fix ave/chunk")
+    names = comments[2].lstrip("#").split()
+    data = [line for line in lines if line.strip() and not line.startswith("#")]
+    blocks, k = [], 0
+    while k < len(data):
+        words = data[k].split()
+        step, nchunk = int(words[0]), int(words[1])
+        rows = data[k + 1:k + 1 + nchunk]
+        if len(rows) < nchunk:            # a block cut short by a running job
+            break
+        values = np.loadtxt(rows, ndmin=2, comments=None) if nchunk else np.zeros((0, len(names)))
+        if values.shape[1] != len(names):
+            raise ValueError(f"{path}: {values.shape[1]} columns in the block of step {step}, "
+                             f"header names {len(names)}")
+        columns = {name: values[:, c] for c, name in enumerate(names)}
+        for name in ("Chunk", "OrigID"):
+            if name in columns:
+                columns[name] = np.rint(columns[name]).astype(np.int64)
+        blocks.append((step, columns))
+        k += 1 + nchunk
+    return blocks
+
+
+def time_average_chunks(blocks, first_step=None):
+    """Average of the blocks of read_ave_chunk (those with timestep >=
+    first_step if given): (columns, total_counts).
+
+    Each value column is the Ncount-weighted mean over the blocks, NaN in
+    chunks whose total count is zero; 'Chunk', 'OrigID' and 'Coord*' are
+    those of the first block; 'Ncount' is the mean count per block.
+    total_counts is the sum of Ncount over the blocks."""
+    if first_step is not None:
+        blocks = [(step, cols) for step, cols in blocks if step >= first_step]
+    if not blocks:
+        raise ValueError("no block to average")
+    nchunk = len(blocks[0][1]["Ncount"])
+    if any(len(cols["Ncount"]) != nchunk for _, cols in blocks):
+        raise ValueError("the blocks have different numbers of chunks; average them by hand")
+    counts = np.array([cols["Ncount"] for _, cols in blocks])
+    total = counts.sum(axis=0)
+    first = blocks[0][1]
+    out = {}
+    for name in first:
+        if name in ("Chunk", "OrigID") or name.startswith("Coord"):
+            out[name] = first[name].copy()
+        elif name == "Ncount":
+            out[name] = total / len(blocks)
+        else:
+            weighted = sum(cols[name] * n for (_, cols), n in zip(blocks, counts))
+            with np.errstate(invalid="ignore", divide="ignore"):
+                out[name] = np.where(total > 0, weighted / np.where(total > 0, total, 1.0), np.nan)
+    return out, total
+
+
+def _skip_item(lines, k):
+    """index of the next 'ITEM:' line after line k"""
+    k += 1
+    while k < len(lines) and not lines[k].startswith("ITEM:"):
+        k += 1
+    return k
+
+
+def read_dump(path):
+    """All snapshots of a text dump custom (ITEM: ATOMS) or dump local
+    (ITEM: ENTRIES): list of (timestep, dict column -> array).
+
+    Each snapshot is "ITEM: TIMESTEP", the step, "ITEM: NUMBER OF ATOMS"
+    (or ENTRIES), the count, "ITEM: BOX BOUNDS ..." and its lines, then
+    "ITEM: ATOMS col1 col2 ..." and count rows; other ITEMs (TIME, UNITS)
+    are skipped; a snapshot may have no atom.  The rows of all snapshots
+    with the same columns are converted at once (fast on 1e5 snapshots).
+    Columns id, type, mol, proc are integers, others floats; a last
+    snapshot cut short by a running job is dropped."""
+    with open(path) as handle:
+        lines = handle.read().splitlines()
+    snaps = []                      # (step, header words, first row, count)
+    step, count, k, n = None, 0, 0, len(lines)
+    while k < n:
+        line = lines[k]
+        if line.startswith("ITEM: TIMESTEP"):
+            step = int(lines[k + 1].split()[0])
+            k += 2
+        elif line.startswith("ITEM: NUMBER OF"):
+            count = int(lines[k + 1])
+            k += 2
+        elif line.startswith("ITEM: ATOMS") or line.startswith("ITEM: ENTRIES"):
+            if k + 1 + count > n:
+                break
+            snaps.append((step, tuple(line.split()[2:]), k + 1, count))
+            k += 1 + count
+        else:
+            k = _skip_item(lines, k)
+    parsed = [None] * len(snaps)
+    for names in dict.fromkeys(s[1] for s in snaps):
+        members = [i for i, s in enumerate(snaps) if s[1] == names]
+        rows = [row for i in members for row in lines[snaps[i][2]:snaps[i][2] + snaps[i][3]]]
+        data = np.loadtxt(rows, ndmin=2, comments=None) if rows else np.zeros((0, len(names)))
+        if data.shape[1] != len(names):
+            raise ValueError(f"{path}: {data.shape[1]} values per row for columns {names}")
+        columns = [np.rint(data[:, c]).astype(np.int64) if name in INTEGER_COLUMNS else data[:, c]
+                   for c, name in enumerate(names)]
+        bounds = np.cumsum([0] + [snaps[i][3] for i in members])
+        for j, i in enumerate(members):
+            lo, hi = bounds[j], bounds[j + 1]
+            parsed[i] = (snaps[i][0], {name: col[lo:hi] for name, col in zip(names, columns)})
+    return parsed
+
+
+# ---------------------------------------------------------------------------
+# Eq. 1-4: control parameters and the mean force
+
+def pressure_from_NP(NP, phi, rho_p, g, H):
+    """Eq. 1: P = N_P Phi rho_p g H"""
+    return NP * phi * rho_p * g * H
+
+
+def velocity_from_NU(NU, g, d):
+    """Eq. 2: U = N_U sqrt(g d)"""
+    return NU * np.sqrt(g * d)
+
+
+def inertial_number(d, rho_p, phi, P, H, U):
+    """Eq. 3: I_M = d sqrt(rho / P) / (H / U), rho = Phi rho_p"""
+    return d * np.sqrt(phi * rho_p / P) * U / H
+
+
+def inertial_number_from_NP_NU(NP, NU, d_over_H):
+    """Eq. 3 through Eq. 1 and 2: I_M = N_U N_P^(-1/2) (d/H)^(3/2),
+    independent of g, rho_p and Phi.  Paper 004's quoted I_M (6.09e-2 for
+    N_U = 10, N_P = 1; 1.2e-3 for N_U = 1, N_P = 25) are those of d/H = 1/30."""
+    return NU / np.sqrt(NP) * d_over_H ** 1.5
+
+
+def volume_fraction_3d(phi2d):
+    """Sec. II: the 3D equivalent of a 2D solid fraction, Phi_3D = 2/3 Phi_2D"""
+    return 2.0 / 3.0 * np.asarray(phi2d, float)
+
+
+def mean_force_model(I, r1, r2, I0):
+    """Eq. 4 over P L d: F/(PLd) = r1 + (r2 - r1) / (1 + I0 / I)"""
+    I = np.asarray(I, float)
+    return r1 + (r2 - r1) / (1.0 + I0 / I)
+
+
+def fit_mean_force(I, Fnorm, sigma=None):
+    """Least-squares fit of Eq. 4 to F/(PLd) against I_M (ln I0 is the fitted
+    parameter).  sigma: optional standard deviations of Fnorm; without them
+    the errors are scaled by the scatter of the residuals.  Returns
+    ((r1, r2, I0), (s_r1, s_r2, s_I0)), standard errors from the covariance
+    (s_I0 = I0 s_lnI0)."""
+    I = np.asarray(I, float)
+    Fnorm = np.asarray(Fnorm, float)
+    keep = np.isfinite(I) & np.isfinite(Fnorm) & (I > 0)
+    I, Fnorm = I[keep], Fnorm[keep]
+    if sigma is not None:
+        sigma = np.asarray(sigma, float)[keep]
+    if len(I) < 4:
+        raise ValueError(f"Eq. 4 has 3 parameters; {len(I)} points are too few")
+    order = np.argsort(I)
+    quarter = max(1, len(I) // 4)
+    r1 = Fnorm[order[:quarter]].mean()
+    r2 = Fnorm[order[-quarter:]].mean()
+    # I0 where F/(PLd) is closest to half-way
+    lnI0 = math.log(I[np.argmin(np.abs(Fnorm - 0.5 * (r1 + r2)))])
+
+    def model(x, a, b, c):
+        return a + (b - a) / (1.0 + np.exp(c) / x)
+
+    p, cov = optimize.curve_fit(model, I, Fnorm, p0=(r1, r2, lnI0), sigma=sigma,
+                                absolute_sigma=sigma is not None, maxfev=20000)
+    err = np.sqrt(np.diag(cov))
+    I0 = math.exp(p[2])
+    return (p[0], p[1], I0), (err[0], err[1], I0 * err[2])
+
+
+# ---------------------------------------------------------------------------
+# Fig. 3a: the vortex
+
+def _grid_index(values):
+    """(sorted distinct values, index of each value) of bin centres written
+    with %g: values within 1e-6 of the span are the same"""
+    values = np.asarray(values, float)
+    span = np.ptp(values) if values.size else 0.0
+    tol = 1e-6 * (span if span > 0 else 1.0)
+    uniq, inverse = np.unique(np.rint(values / tol), return_inverse=True)
+    centres = np.bincount(inverse, weights=values) / np.bincount(inverse)
+    return centres, inverse
+
+
+def to_grid(xc, yc, values):
+    """Bin centres and values of a bin/2d chunk field (flat, any order) on a
+    regular grid: (x (nx,), y (ny,), grid (ny, nx)); NaN where no bin."""
+    x, ix = _grid_index(xc)
+    y, iy = _grid_index(yc)
+    grid = np.full((len(y), len(x)), np.nan)
+    grid[iy, ix] = np.asarray(values, float)
+    return x, y, grid
+
+
+def stream_function(xc, yc, vx, vy=None):
+    """Stream function of a time-averaged velocity field on bin centres:
+    (x, y, psi (ny, nx)), psi = integral of vx dy from the bottom of the grid
+    (psi = 0 below the first row; vx = dpsi/dy, vy = -dpsi/dx), evaluated at
+    the bin centres by the midpoint rule; empty bins (NaN) count as zero
+    velocity and are NaN in psi.  With vy, psi is the mean of that and of
+    -integral of vy dx from the left of the grid, which are equal for a
+    divergence-free field: each then fixes the centre best along the
+    direction across which it integrates."""
+    x, y, u = to_grid(xc, yc, vx)
+    dy = np.diff(y).mean() if len(y) > 1 else 1.0
+    u0 = np.nan_to_num(u)
+    psi = dy * (np.cumsum(u0, axis=0) - 0.5 * u0)
+    if vy is not None:
+        _, _, v = to_grid(xc, yc, vy)
+        dx = np.diff(x).mean() if len(x) > 1 else 1.0
+        v0 = np.nan_to_num(v)
+        psi = 0.5 * (psi - dx * (np.cumsum(v0, axis=1) - 0.5 * v0))
+    psi[~np.isfinite(u)] = np.nan
+    return x, y, psi
+
+
+def _quadratic_extremum(patch):
+    """Offset (du, dw), in bins, of the extremum of a 3x3 patch (rows w = -1,
+    0, 1; columns u = -1, 0, 1) from its centre: least-squares quadratic
+    surface, or parabolas along each axis when that has no extremum nearby."""
+    w, u = np.mgrid[-1:2, -1:2]
+    u, w, z = u.ravel(), w.ravel(), patch.ravel()
+    A = np.column_stack([np.ones(9), u, w, u * u, u * w, w * w])
+    a = np.linalg.lstsq(A, z, rcond=None)[0]
+    hess = np.array([[2 * a[3], a[4]], [a[4], 2 * a[5]]])
+    if np.linalg.det(hess) > 0:
+        du, dw = np.linalg.solve(hess, -a[1:3])
+        if abs(du) <= 1.0 and abs(dw) <= 1.0:
+            return du, dw
+
+    def parabola(m, c, p):
+        curv = m - 2 * c + p
+        return 0.0 if curv == 0 else float(np.clip(0.5 * (m - p) / curv, -0.5, 0.5))
+
+    return parabola(*patch[1]), parabola(*patch[:, 1])
+
+
+def vortex_centre(xc, yc, vx, vy, L, x_right=None):
+    """Centre of the cavity's vortex from a time-averaged velocity field on
+    bin centres (flat arrays as fix ave/chunk bin/2d writes them, NaN or
+    whatever count-weighted mean empty bins have): the interior extremum of
+    the stream function with the largest |psi| (interior: its 8 neighbours
+    are non-empty bins), refined by a quadratic fit over them.  vy may be
+    None (psi from vx only).  Returns (x_centre, y_centre, ell / L), ell =
+    x_right - x_centre the distance to the right wall (x_right = L by
+    default: walls at 0 and L); paper 004 Fig. 3a."""
+    x, y, psi = stream_function(xc, yc, vx, vy)
+    if len(x) < 3 or len(y) < 3:
+        raise ValueError("the grid needs at least 3 x 3 bins")
+    finite = np.isfinite(psi)
+    interior = np.zeros_like(finite)
+    interior[1:-1, 1:-1] = True
+    for dj in (-1, 0, 1):
+        for di in (-1, 0, 1):
+            interior[1:-1, 1:-1] &= finite[1 + dj:len(y) - 1 + dj, 1 + di:len(x) - 1 + di]
+    if not interior.any():
+        raise ValueError("no interior bin with 8 non-empty neighbours")
+    score = np.where(interior, np.abs(np.nan_to_num(psi)), -np.inf)
+    j, i = np.unravel_index(np.argmax(score), score.shape)
+    du, dw = _quadratic_extremum(psi[j - 1:j + 2, i - 1:i + 2])
+    xcen = x[i] + du * 0.5 * (x[i + 1] - x[i - 1])
+    ycen = y[j] + dw * 0.5 * (y[j + 1] - y[j - 1])
+    x_right = L if x_right is None else x_right
+    return xcen, ycen, (x_right - xcen) / L
+
+
+# ---------------------------------------------------------------------------
+# Eq. 6: autocorrelation and the critical time
+
+def autocorrelation(F, max_lag):
+    """Normalised autocorrelation C(k), k = 0 .. max_lag, of a series: mean
+    removed, biased estimator sum_n f_n f_{n+k} / sum_n f_n^2 (C(0) = 1),
+    computed by FFT with zero padding.  NaN for a constant series."""
+    f = np.asarray(F, float)
+    f = f - f.mean()
+    n = len(f)
+    max_lag = min(int(max_lag), n - 1)
+    size = 1 << int(math.ceil(math.log2(2 * n))) if n > 1 else 2
+    spectrum = np.fft.rfft(f, size)
+    acov = np.fft.irfft(spectrum * np.conj(spectrum), size)[:max_lag + 1]
+    if acov[0] <= 0:
+        return np.full(max_lag + 1, np.nan)
+    return acov / acov[0]
+
+
+def correlation_time(C, dt, threshold=THRESHOLD):
+    """Eq. 6: the lowest lag at which C falls to threshold, linearly
+    interpolated between the two samples around the first crossing, times
+    dt; 0 if C(0) is already at or below it, NaN if C never reaches it."""
+    C = np.asarray(C, float)
+    below = np.nonzero(C <= threshold)[0]
+    if len(below) == 0:
+        return np.nan
+    k = below[0]
+    if k == 0:
+        return 0.0
+    return dt * (k - 1 + (C[k - 1] - threshold) / (C[k - 1] - C[k]))
+
+
+def portion_correlation_times(series, dt, max_lag, threshold=THRESHOLD):
+    """Delta t_c^i of each column of series (time, portion) and their mean
+    over the portions that cross (Fig. 10): (array, mean)"""
+    series = np.asarray(series, float)
+    times = np.array([correlation_time(autocorrelation(series[:, i], max_lag), dt, threshold)
+                      for i in range(series.shape[1])])
+    mean = np.nanmean(times) if np.isfinite(times).any() else np.nan
+    return times, mean
+
+
+# ---------------------------------------------------------------------------
+# Eq. 7: the truncated log-normal
+
+def _z0(mu, sigma, f0):
+    return (math.log(f0) - mu) / sigma
+
+
+def trunc_lognormal_pdf(f, mu, sigma, f0):
+    """Eq. 7: the density of f > 0 such that f + f0 is log-normal (ln(f + f0)
+    normal with mean mu, standard deviation sigma) restricted to f + f0 > f0;
+    S = P(X > f0) for X log-normal(mu, sigma), the survival function of the
+    untruncated log-normal at f0.  Zero for f <= 0."""
+    f = np.asarray(f, float)
+    x = np.where(f > 0, f + f0, 1.0)
+    log_s = special.log_ndtr(-_z0(mu, sigma, f0))
+    z = (np.log(x) - mu) / sigma
+    dens = np.exp(-0.5 * z * z - log_s) / (sigma * math.sqrt(2 * math.pi) * x)
+    return np.where(f > 0, dens, 0.0)
+
+
+def trunc_lognormal_cdf(f, mu, sigma, f0):
+    """P(f' <= f) of Eq. 7 (0 for f <= 0)"""
+    f = np.asarray(f, float)
+    x = np.where(f > 0, f + f0, f0)
+    z0 = _z0(mu, sigma, f0)
+    z = (np.log(x) - mu) / sigma
+    return 1.0 - special.ndtr(-z) / special.ndtr(-z0)
+
+
+def sample_trunc_lognormal(n, mu, sigma, f0, rng):
+    """n samples of Eq. 7 by inverse-CDF sampling: the survival function
+    S(z)/S(z0) of f is uniform in (0, 1]"""
+    v = 1.0 - rng.random(n)                        # (0, 1]
+    z = -special.ndtri(v * special.ndtr(-_z0(mu, sigma, f0)))
+    z = np.maximum(z, _z0(mu, sigma, f0))
+    return np.exp(mu + sigma * z) - f0
+
+
+def trunc_lognormal_loglik(samples, mu, sigma, f0):
+    """log-likelihood of Eq. 7 for positive samples"""
+    x = np.asarray(samples, float) + f0
+    z = (np.log(x) - mu) / sigma
+    return (-0.5 * np.sum(z * z) - np.sum(np.log(x))
+            - len(x) * (math.log(sigma) + 0.5 * math.log(2 * math.pi)
+                        + special.log_ndtr(-_z0(mu, sigma, f0))))
+
+
+def fit_trunc_lognormal(samples, starts=(0.1, 1.0)):
+    """Maximum-likelihood (mu, sigma, f0) of Eq. 7 for positive samples
+    (non-positive ones are dropped), by Nelder-Mead over (mu, ln sigma,
+    ln f0) as in paper 004; the best of the starts f0 = s * mean(samples),
+    each with mu and sigma those of ln(samples + f0)."""
+    f = np.asarray(samples, float)
+    f = f[np.isfinite(f) & (f > 0)]
+    if len(f) < 10:
+        raise ValueError(f"{len(f)} positive samples are too few for a fit")
+    scale = f.mean()
+
+    def nll(p):
+        value = -trunc_lognormal_loglik(f, p[0], math.exp(p[1]), math.exp(p[2]))
+        return value if np.isfinite(value) else np.inf
+
+    best = None
+    for s in starts:
+        f0 = s * scale
+        logs = np.log(f + f0)
+        p0 = np.array([logs.mean(), math.log(max(logs.std(), 1e-3)), math.log(f0)])
+        res = optimize.minimize(nll, p0, method="Nelder-Mead",
+                                options={"xatol": 1e-7, "fatol": 1e-7, "maxiter": 20000,
+                                         "maxfev": 20000})
+        if best is None or res.fun < best.fun:
+            best = res
+    return best.x[0], math.exp(best.x[1]), math.exp(best.x[2])
+
+
+# ---------------------------------------------------------------------------
+# PDFs and the wall portions
+
+def normalised_pdf(values, bins=50):
+    """Histogram density of values / mean(values): (bin centres, density);
+    bins as numpy.histogram takes them (a count or the edges).  Empty arrays
+    when there is no positive mean to scale by."""
+    v = np.asarray(values, float)
+    v = v[np.isfinite(v)]
+    if len(v) == 0 or not v.mean() > 0:
+        return np.array([]), np.array([])       # e.g. a portion of the wall no grain touched
+    density, edges = np.histogram(v / v.mean(), bins=bins, density=True)
+    return 0.5 * (edges[1:] + edges[:-1]), density
+
+
+def mean_portion_pdf(series, bins=50, portions=(3, 9)):
+    """Fig. 14b: the mean over portions i = portions[0] .. portions[1]
+    (1-based, bottom first, inclusive) of the densities of F_i / mean(F_i);
+    series is (time, portion).  A count of bins spans 0 .. the largest
+    scaled force of those portions.  Returns (bin centres, mean density)."""
+    series = np.asarray(series, float)
+    cols = [i for i in range(portions[0] - 1, portions[1]) if np.nanmean(series[:, i]) > 0]
+    if not cols:
+        return np.array([]), np.array([])
+    scaled = [series[:, i] / np.nanmean(series[:, i]) for i in cols]
+    if np.ndim(bins) == 0:
+        top = max(np.nanmax(s) for s in scaled)
+        bins = np.linspace(0.0, top, int(bins) + 1)
+    dens = [np.histogram(s[np.isfinite(s)], bins=bins, density=True)[0] for s in scaled]
+    edges = np.asarray(bins, float)
+    return 0.5 * (edges[1:] + edges[:-1]), np.mean(dens, axis=0)
+
+
+def portion_forces(y, force, y_bottom, y_top, n=10):
+    """Total force on each of n equal portions of the wall between y_bottom
+    and y_top (bottom portion first) from the heights y of the contacts of
+    one snapshot and their forces; contacts below y_bottom count in the
+    first portion, above y_top in the last, so the portions sum to the
+    total."""
+    y = np.asarray(y, float)
+    force = np.asarray(force, float)
+    index = np.floor(n * (y - y_bottom) / (y_top - y_bottom)).astype(int)
+    return np.bincount(np.clip(index, 0, n - 1), weights=force, minlength=n)
+
+
+def portion_force_series(snapshots, y_bottom, y_top, n=10, ycol="v_ycontact", fcol="v_fwall"):
+    """portion_forces of each snapshot of read_dump: (timesteps, (nsnap, n));
+    y_bottom and y_top are numbers or one per snapshot (a moving lid)."""
+    nsnap = len(snapshots)
+    counts = np.array([len(cols[ycol]) for _, cols in snapshots], dtype=np.int64)
+    steps = np.array([step for step, _ in snapshots], dtype=np.int64)
+    if counts.sum() == 0:
+        return steps, np.zeros((nsnap, n))
+    y = np.concatenate([cols[ycol] for _, cols in snapshots]).astype(float)
+    force = np.concatenate([cols[fcol] for _, cols in snapshots]).astype(float)
+    ybot = np.repeat(np.broadcast_to(np.asarray(y_bottom, float), (nsnap,)), counts)
+    ytop = np.repeat(np.broadcast_to(np.asarray(y_top, float), (nsnap,)), counts)
+    index = np.clip(np.floor(n * (y - ybot) / (ytop - ybot)).astype(int), 0, n - 1)
+    snap = np.repeat(np.arange(nsnap), counts)
+    forces = np.bincount(snap * n + index, weights=force, minlength=nsnap * n)
+    return steps, forces.reshape(nsnap, n)
