@@ -7,10 +7,11 @@
     avalanche_figures.py sigma  RUN.series --theta 19.5 [RUN2.series --theta 15 ...] -o fig6.png
         Figs. 6 / 9: sigma_1, sigma_2 against the time since the tilt to theta
     avalanche_figures.py thetam TABLE -o fig7.png
-        Fig. 7: theta_m against H/d; TABLE lines "H/d theta_m(0 kHz) theta_m(70 kHz)"
-        (optional 4th and 5th columns: paper 000's values, nan if unknown)
+        Fig. 7: theta_m against H/d; TABLE lines "H/d theta0 sd0 theta70 sd70"
+        (ensemble means and standard deviations; optional 6th and 7th columns:
+        paper 000's values, nan if unknown)
     avalanche_figures.py tcon   TABLE -o fig8.png
-        Fig. 8: t_con against theta; TABLE lines "label theta t_con"
+        Fig. 8: t_con against theta; TABLE lines "label theta t_con" (one per run)
     avalanche_figures.py chains RUN.dump RUN.contacts [--frame K] -o fig10.png
         Fig. 10: force chains, width proportional to f_n, colour 1 - mu*/mu
     avalanche_figures.py calibration calibration.json -o calibration.png
@@ -116,31 +117,46 @@ def fig_sigma(a):
 
 
 def fig_thetam(a):
+    """Fig. 7 from a table of ensembles: lines "H/d theta0 sd0 theta70 sd70
+    [paper0 paper70]" (means and standard deviations over the packings, nan
+    where missing); paper 000's trend (20 deg at 3 d, -0.26 deg/d, 2 deg lower
+    with 70 kHz) is drawn as dashed lines."""
     t = np.atleast_2d(np.loadtxt(a.table))
     fig, ax = plt.subplots(figsize=(4.5, 3.4))
-    ax.plot(t[:, 1], t[:, 0], "o-", color="tab:blue", label="0 kHz (this code)")
-    ax.plot(t[:, 2], t[:, 0], "o-", color="tab:orange", label="70 kHz (this code)")
-    if t.shape[1] >= 5:
-        for col, c in ((3, "tab:blue"), (4, "tab:orange")):
+    for col, c, label in ((1, "tab:blue", "0 kHz"), (3, "tab:orange", "70 kHz")):
+        ok = np.isfinite(t[:, col])
+        ax.errorbar(t[ok, col], t[ok, 0], xerr=t[ok, col + 1], fmt="o-", color=c, capsize=3,
+                    label=f"{label} (this code, mean ± s.d.)")
+    h = np.linspace(3, 14.4, 2)
+    ax.plot(20 - 0.26 * (h - 3), h, "--", color="tab:blue", lw=0.8, label="paper 000 trend, 0 kHz")
+    ax.plot(18 - 0.26 * (h - 3), h, "--", color="tab:orange", lw=0.8, label="paper 000: 2° lower, 70 kHz")
+    if t.shape[1] >= 7:
+        for col, c in ((5, "tab:blue"), (6, "tab:orange")):
             ok = np.isfinite(t[:, col])
-            ax.plot(t[ok, col], t[ok, 0], "s", mfc="none", color=c, label=f"paper 000, {'0' if col == 3 else '70'} kHz")
+            ax.plot(t[ok, col], t[ok, 0], "s", mfc="none", color=c, ms=8,
+                    label=f"paper 000 text, {'0' if col == 5 else '70'} kHz")
     ax.set_xlabel(r"avalanche angle $\theta_m$ (°)")
     ax.set_ylabel("H/d")
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=6)
     fig.tight_layout()
     return fig
 
 
 def fig_tcon(a):
+    """Fig. 8 from lines "label theta t_con" (one per run; several packings
+    may give several points per label and angle)."""
     rows = [line.split() for line in open(a.table) if line.strip() and not line.startswith("#")]
     fig, ax = plt.subplots(figsize=(4.5, 3.4))
-    for label in dict.fromkeys(r[0] for r in rows):
+    for k, label in enumerate(dict.fromkeys(r[0] for r in rows)):
         pts = np.array([[float(r[1]), float(r[2])] for r in rows if r[0] == label])
         pts = pts[np.argsort(pts[:, 0])]
-        ax.plot(pts[:, 0], pts[:, 1], "o-", label=label)
+        marker = "o" if "70" not in label else "^"
+        ax.plot(pts[:, 0], pts[:, 1], marker, color=f"C{k}", label=label, alpha=0.8)
+        angles = np.unique(pts[:, 0])
+        ax.plot(angles, [pts[pts[:, 0] == th, 1].mean() for th in angles], "-", color=f"C{k}", lw=0.8)
     ax.set_xlabel(r"$\theta$ (°)")
     ax.set_ylabel(r"$t_{con}$ (s)")
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=7)
     fig.tight_layout()
     return fig
 

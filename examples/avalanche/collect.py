@@ -1,13 +1,18 @@
 #!/usr/bin/python3
-"""Collect the production runs (out/prod, run_production.sh) into tables and figures.
+"""Collect the ensembles of run_ensemble.sh into the tables and figures of RESULTS.md.
 
-    /usr/bin/python3 examples/avalanche/collect.py [PROD_DIR] [FIG_DIR]
+    /usr/bin/python3 examples/avalanche/collect.py [OUT_DIR] [FIG_DIR]
 
-Prints a markdown table of theta_m(H/d) and t_con for 0 and 70 kHz beside paper
-000's values, and writes figures/fig3_modes_H*.png, fig6_9_sigma_H*.png,
-fig7_thetam.png, fig8_tcon.png, fig10_chains_H*.png (small PNGs).
+OUT_DIR (default examples/avalanche/out) holds ensemble_periodic/H<H>/s<seed>/
+and ensemble/H<H>/s<seed>/ (free ends, 400 d), each with log.deposit, log.f0,
+log.f70 and the t_con runs log.tcon_f*_<theta>.  Prints markdown tables:
+packings, theta_m(H/d) per geometry with means and standard deviations, the
+fitted slope of theta_m(H/d) with its standard error, the 70 kHz shift (paired
+by packing), t_con; writes OUT_DIR/summary.json and the figures fig7_thetam,
+fig8_tcon, fig10_chains_H6, fig3_modes_H6, fig6_9_sigma_H14.4 (PNG).
 """
 import glob
+import json
 import os
 import re
 import sys
@@ -19,15 +24,20 @@ import numpy as np  # noqa: E402
 import avalanche as av  # noqa: E402
 import avalanche_figures as figs  # noqa: E402
 
-# paper 000, section 3.2 text: H = 3 d: 20 deg without, 14.5 deg with 70 kHz;
-# H = 14.4 d: theta_m = 17 deg without vibration (Fig. 6); the other values are
-# only drawn in Fig. 7 ("about 2 deg lower with 70 kHz").
+# paper 000, §3.1-3.2 text: H = 3 d: 20 deg without, 14.5 deg with 70 kHz;
+# H = 14.4 d: 17 deg without (Fig. 6), flows at 16 deg with 70 kHz (Fig. 9);
+# the other values are only drawn in Fig. 7: "about 2 deg lower with 70 kHz";
+# theta_m(H/d) falls by about 0.26 deg per d (issue 13's reading of Fig. 7)
 PAPER = {3.0: (20.0, 14.5), 14.4: (17.0, np.nan)}
+PAPER_SLOPE = -0.26
+PAPER_TCON_H6_19DEG = (1.15, 0.30)
 
 RESULT = re.compile(r"theta_m = ([0-9.]+|none) deg\s+t_con = ([-0-9.]+) s")
+GEOMETRIES = (("ensemble_periodic", "periodic"), ("ensemble", "free ends, 400 d"))
 
 
 def result(log):
+    """(theta_m, t_con) of an in.avalanche log; nan when absent or none."""
     if not os.path.exists(log):
         return np.nan, np.nan
     for line in open(log):
@@ -43,73 +53,194 @@ def deposit(log):
         if line.startswith("deposit:"):
             n = re.search(r"(\d+) grains on (\d+) base", line)
             h = re.search(r"H = ([0-9.]+) d", line)
-            return int(n.group(1)), int(n.group(2)), float(h.group(1))
-    return 0, 0, np.nan
+            length = re.search(r"box ([0-9.]+) d long", line)
+            return int(n.group(1)), int(n.group(2)), float(h.group(1)), float(length.group(1))
+    return 0, 0, np.nan, np.nan
 
 
-def loop_time(log):
-    return sum(float(l.split()[3]) for l in open(log) if l.startswith("Loop time of"))
+def wall_time(log):
+    """Total wall time of a LAMMPS log (s)."""
+    for line in open(log):
+        if line.startswith("Total wall time:"):
+            h, m, s = (int(v) for v in line.split()[-1].split(":"))
+            return 3600 * h + 60 * m + s
+    return np.nan
 
 
-def main(prod=os.path.join(here, "out", "prod"), figdir=os.path.join(here, "figures")):
+def packing(path):
+    """Everything about one packing directory."""
+    n, nb, hm, length = deposit(os.path.join(path, "log.deposit"))
+    p = {"path": path, "seed": os.path.basename(path)[1:], "grains": n, "base": nb, "H_measured": hm,
+         "length": length}
+    for tag in ("f0", "f70"):
+        log = os.path.join(path, f"log.{tag}")
+        p[tag] = result(log)
+        p[f"{tag}_wall"] = wall_time(log) if os.path.exists(log) else np.nan
+        rest = ""
+        if os.path.exists(log):
+            m = re.search(r"\((at rest|NOT at rest after tsettle|no pre-ramp)\)", open(log).read())
+            rest = m.group(1) if m else ""
+        p[f"{tag}_rest"] = rest
+        p[f"tcon_{tag}"] = []
+        for t in sorted(glob.glob(os.path.join(path, f"log.tcon_{tag}_*"))):
+            theta = float(t.rsplit("_", 1)[1])
+            p[f"tcon_{tag}"].append((theta, result(t)[1]))
+    return p
+
+
+def ensembles(top):
+    """{geometry label: {H: [packings]}} for the geometries present."""
+    out = {}
+    for sub, label in GEOMETRIES:
+        by_h = {}
+        for d in sorted(glob.glob(os.path.join(top, sub, "H*"))):
+            H = float(os.path.basename(d)[1:])
+            packs = [packing(s) for s in sorted(glob.glob(os.path.join(d, "s*")))
+                     if os.path.exists(os.path.join(s, "log.deposit"))]
+            packs = [p for p in packs if np.isfinite(p["f0"][0]) or np.isfinite(p["f70"][0])]
+            if packs:
+                by_h[H] = packs
+        if by_h:
+            out[label] = by_h
+    return out
+
+
+def mean_sd(values):
+    v = np.array([x for x in values if np.isfinite(x)])
+    if len(v) == 0:
+        return np.nan, np.nan, 0
+    return float(v.mean()), float(v.std(ddof=1)) if len(v) > 1 else np.nan, len(v)
+
+
+def slope(points):
+    """Least-squares slope of theta against the measured H/d over (target H,
+    measured H, theta) points of all packings, with its standard error; nan
+    unless there are two target thicknesses or more."""
+    pts = np.array([p for p in points if np.all(np.isfinite(p))])
+    if len(pts) < 4 or len(np.unique(pts[:, 0])) < 2:
+        return np.nan, np.nan
+    (a, b), cov = np.polyfit(pts[:, 1], pts[:, 2], 1, cov=True)
+    return float(a), float(np.sqrt(cov[0, 0]))
+
+
+def summarise(by_h):
+    rows = []
+    for H, packs in sorted(by_h.items()):
+        t0 = [p["f0"][0] for p in packs]
+        t70 = [p["f70"][0] for p in packs]
+        shift = [a - b for a, b in zip(t0, t70) if np.isfinite(a) and np.isfinite(b)]
+        rows.append({"H": H, "n": len(packs),
+                     "H_measured": mean_sd([p["H_measured"] for p in packs])[0],
+                     "theta0": mean_sd(t0), "theta70": mean_sd(t70), "shift": mean_sd(shift),
+                     "tcon0": mean_sd([p["f0"][1] for p in packs]), "tcon70": mean_sd([p["f70"][1] for p in packs]),
+                     "wall0": mean_sd([p["f0_wall"] for p in packs])[0],
+                     "wall70": mean_sd([p["f70_wall"] for p in packs])[0],
+                     "grains": packs[0]["grains"], "base": packs[0]["base"], "length": packs[0]["length"],
+                     "at_rest": sum(p["f0_rest"] == "at rest" for p in packs)})
+    s0 = slope([(H, p["H_measured"], p["f0"][0]) for H, packs in by_h.items() for p in packs])
+    s70 = slope([(H, p["H_measured"], p["f70"][0]) for H, packs in by_h.items() for p in packs])
+    return rows, s0, s70
+
+
+def fmt(ms, digits=2):
+    m, s, n = ms
+    if not np.isfinite(m):
+        return "—"
+    return f"{m:.{digits}f} ± {s:.{digits}f}" if np.isfinite(s) else f"{m:.{digits}f}"
+
+
+def print_tables(all_ens, summary):
+    for label, by_h in all_ens.items():
+        rows, s0, s70 = summary[label]
+        print(f"\n### {label}\n")
+        print("| H/d (measured) | packings | grains + base, length | θ_m 0 kHz | θ_m 70 kHz | shift (s.e.) "
+              "| t_con at θ_m, 0 / 70 kHz (s) | paper 000 θ_m 0 / 70 kHz | wall time per ramp 0 / 70 kHz (s) |")
+        print("|---|---|---|---|---|---|---|---|---|")
+        for r in rows:
+            p = PAPER.get(r["H"])
+            trend = 20.0 + PAPER_SLOPE * (r["H"] - 3.0)
+            ptxt = (f"{p[0]:g} / {p[1]:g}" if p and np.isfinite(p[1]) else f"{p[0]:g} / ≈ {p[0] - 2:g}" if p
+                    else f"≈ {trend:.1f} / ≈ {trend - 2:.1f} (Fig. 7)")
+            m, s, n = r["shift"]
+            se = s / np.sqrt(n) if n > 1 else np.nan
+            print(f"| {r['H']:g} ({r['H_measured']:.2f}) | {r['n']} | {r['grains']} + {r['base']}, {r['length']:g} d "
+                  f"| {fmt(r['theta0'])}° | {fmt(r['theta70'])}° | {fmt(r['shift'])}° ({se:.2f}°) "
+                  f"| {fmt(r['tcon0'])} / {fmt(r['tcon70'])} | {ptxt} | {r['wall0']:.0f} / {r['wall70']:.0f} |")
+        print(f"\nslope of θ_m(H/d), all packings: 0 kHz {s0[0]:+.3f} ± {s0[1]:.3f} °/d, "
+              f"70 kHz {s70[0]:+.3f} ± {s70[1]:.3f} °/d (paper 000 ≈ {PAPER_SLOPE}°/d)")
+        print("\nper packing (seed: θ_m 0 / 70 kHz, t_con 0 / 70 kHz):")
+        for H, packs in sorted(by_h.items()):
+            print(f"- H = {H:g} d: " + "; ".join(
+                f"s{p['seed']}: {p['f0'][0]:g} / {p['f70'][0]:g}°, {p['f0'][1]:.2f} / {p['f70'][1]:.2f} s"
+                for p in packs))
+        tc = [(H, tag, th, t) for H, packs in sorted(by_h.items()) for p in packs
+              for tag in ("f0", "f70") for th, t in p[f"tcon_{tag}"]]
+        if tc:
+            print("\nt_con above θ_m (one run per angle, from the last static state of the ramp; "
+                  "nan: no uniform flow within 1.3 s):")
+            for H in sorted({h for h, *_ in tc}):
+                for tag in ("f0", "f70"):
+                    pts = sorted((th, t) for h, g, th, t in tc if h == H and g == tag)
+                    if pts:
+                        print(f"- H = {H:g} d, {tag[1:]} kHz: " + ", ".join(f"{th:g}° {t:.2f} s" for th, t in pts))
+
+
+def figures(all_ens, summary, top, figdir):
     os.makedirs(figdir, exist_ok=True)
-    rows, tcon_rows = [], []
-    for d in sorted(glob.glob(os.path.join(prod, "H*")), key=lambda p: float(p.split("/H")[-1])):
-        H = float(d.split("/H")[-1])
-        if not os.path.exists(os.path.join(d, "log.deposit")):
+    label = "periodic" if "periodic" in all_ens else next(iter(all_ens), None)
+    if label is None:
+        return
+    rows, _, _ = summary[label]
+    table7 = os.path.join(top, "thetam.txt")
+    with open(table7, "w") as f:
+        for r in rows:
+            p = PAPER.get(r["H"], (np.nan, np.nan))
+            f.write(f"{r['H_measured']:g} {r['theta0'][0]:g} {r['theta0'][1]:g} {r['theta70'][0]:g} "
+                    f"{r['theta70'][1]:g} {p[0]:g} {p[1]:g}\n")
+    figs.main(["thetam", table7, "-o", os.path.join(figdir, "fig7_thetam.png"), "--dpi", "80"])
+    by_h = all_ens[label]
+    table8 = os.path.join(top, "tcon.txt")
+    with open(table8, "w") as f:
+        for H in (6.0, 11.4, 14.4):
+            for p in by_h.get(H, []):
+                for tag in ("f0", "f70"):
+                    pts = [(p[tag][0], p[tag][1])] + p[f"tcon_{tag}"]
+                    for th, t in pts:
+                        if np.isfinite(th) and np.isfinite(t):
+                            f.write(f"H{H:g}_{tag[1:]}kHz {th:g} {t:g}\n")
+    if os.path.getsize(table8):
+        figs.main(["tcon", table8, "-o", os.path.join(figdir, "fig8_tcon.png"), "--dpi", "80"])
+    for H in (6.0, 14.4):
+        packs = by_h.get(H, [])
+        if not packs:
             continue
-        n, nb, hm = deposit(os.path.join(d, "log.deposit"))
-        r0, r70 = result(os.path.join(d, "log.f0")), result(os.path.join(d, "log.f70"))
-        t0 = loop_time(os.path.join(d, "log.f0")) if os.path.exists(os.path.join(d, "log.f0")) else np.nan
-        t70 = loop_time(os.path.join(d, "log.f70")) if os.path.exists(os.path.join(d, "log.f70")) else np.nan
-        rows.append((H, hm, n, nb, r0, r70, t0, t70))
-        for tag, label in (("f0", "0 kHz"), ("f70", "70 kHz")):
-            if np.isfinite(result(os.path.join(d, f"log.{tag}"))[0]):
-                tm, tc = result(os.path.join(d, f"log.{tag}"))
-                tcon_rows.append((f"H{H:g}_{label.replace(' ', '')}", tm, tc))
-            for log in sorted(glob.glob(os.path.join(d, f"log.tcon_{tag}_*"))):
-                tm, tc = result(log)
-                if np.isfinite(tm):
-                    tcon_rows.append((f"H{H:g}_{label.replace(' ', '')}", tm, tc))
-        # per-H figures: spectrum and chains of the 70 kHz run at its last frame, sigma curves
-        dump, cont = os.path.join(d, "f70.dump"), os.path.join(d, "f70.contacts")
+        p = packs[0]
+        dump, cont = os.path.join(p["path"], "f70.dump"), os.path.join(p["path"], "f70.contacts")
         if os.path.exists(dump) and os.path.exists(cont):
-            hist = os.path.join(d, f"modes_H{H:g}.hist")     # compute vibration/modes (in.modes), if run
-            figs.main(["modes", dump, cont, "--frame", "0", "-o", os.path.join(figdir, f"fig3_modes_H{H:g}.png"),
-                       "--dpi", "80"] + (["--hist", hist] if os.path.exists(hist) else []))
-            # the last frame below theta_m: the static layer under ultrasound (Fig. 10)
             frames = av.read_dump(dump)
-            below = [i for i, fr in enumerate(frames) if fr["v_th"][0] < (r70[0] if np.isfinite(r70[0]) else 90) - 1e-6]
+            tm = p["f70"][0] if np.isfinite(p["f70"][0]) else 90.0
+            below = [i for i, fr in enumerate(frames) if fr["v_th"][0] < tm - 1e-6]
             k = below[-1] if below else len(frames) - 1
-            figs.main(["chains", dump, cont, "--frame", str(k), "-o", os.path.join(figdir, f"fig10_chains_H{H:g}.png"), "--dpi", "80"])
-        sers = [(os.path.join(d, f"{tag}.series"), r[0]) for tag, r in (("f0", r0), ("f70", r70)) if np.isfinite(r[0])]
+            figs.main(["chains", dump, cont, "--frame", str(k), "-o", os.path.join(figdir, f"fig10_chains_H{H:g}.png"),
+                       "--dpi", "80"])
+            figs.main(["modes", dump, cont, "--frame", "0", "-o", os.path.join(figdir, f"fig3_modes_H{H:g}.png"),
+                       "--dpi", "80"])
+        sers = [(os.path.join(p["path"], f"{tag}.series"), p[tag][0]) for tag in ("f0", "f70") if np.isfinite(p[tag][0])]
         if sers:
             args = ["sigma"] + [s for s, _ in sers]
             for _, th in sers:
                 args += ["--theta", f"{th:g}"]
             figs.main(args + ["-o", os.path.join(figdir, f"fig6_9_sigma_H{H:g}.png"), "--dpi", "80"])
-    table7 = os.path.join(prod, "thetam.txt")
-    with open(table7, "w") as f:
-        for H, hm, n, nb, r0, r70, *_ in rows:
-            p = PAPER.get(H, (np.nan, np.nan))
-            f.write(f"{H:g} {r0[0]:g} {r70[0]:g} {p[0]:g} {p[1]:g}\n")
-    figs.main(["thetam", table7, "-o", os.path.join(figdir, "fig7_thetam.png"), "--dpi", "80"])
-    if tcon_rows:
-        table8 = os.path.join(prod, "tcon.txt")
-        with open(table8, "w") as f:
-            for label, tm, tc in tcon_rows:
-                f.write(f"{label} {tm:g} {tc:g}\n")
-        figs.main(["tcon", table8, "-o", os.path.join(figdir, "fig8_tcon.png"), "--dpi", "80"])
-    print("| H/d (target) | H/d (measured) | grains + base | θ_m 0 kHz | θ_m 70 kHz | shift | t_con 0 / 70 kHz at θ_m | paper 000 θ_m 0 / 70 kHz | DEM time (s) 0 / 70 kHz |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    for H, hm, n, nb, r0, r70, t0, t70 in rows:
-        p = PAPER.get(H)
-        ptxt = (f"{p[0]:g} / {p[1]:g}" if p and np.isfinite(p[1]) else f"{p[0]:g} / —" if p else "Fig. 7 only") \
-            + " (≈ 2° lower with 70 kHz)"
-        print(f"| {H:g} | {hm:.2f} | {n} + {nb} | {r0[0]:g}° | {r70[0]:g}° | {r0[0] - r70[0]:g}° | "
-              f"{r0[1]:.3f} s / {r70[1]:.3f} s | {ptxt} | {t0:.0f} / {t70:.0f} |")
-    for label, tm, tc in tcon_rows:
-        print(f"t_con {label} theta {tm:g}: {tc:.3f} s")
+
+
+def main(top=os.path.join(here, "out"), figdir=os.path.join(here, "figures")):
+    all_ens = ensembles(top)
+    summary = {label: summarise(by_h) for label, by_h in all_ens.items()}
+    print_tables(all_ens, summary)
+    figures(all_ens, summary, top, figdir)
+    with open(os.path.join(top, "summary.json"), "w") as f:
+        json.dump({label: {"rows": rows, "slope0": s0, "slope70": s70} for label, (rows, s0, s70) in summary.items()},
+                  f, indent=1, default=float)
 
 
 if __name__ == "__main__":

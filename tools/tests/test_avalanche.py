@@ -215,7 +215,7 @@ def test_figures_from_synthetic_runs(tmp_path):
                                         np.linspace(3, 0.5, 40), t, t, np.full(40, 0.9),
                                         np.ones(40), np.zeros(40)]))
     table7 = tmp_path / "thetam.txt"
-    table7.write_text("3 20 14.5 20 14.5\n6 19.5 15 nan nan\n")
+    table7.write_text("3 20 1.0 14.5 0.5 20 14.5\n6 19.5 1.2 15 0.7 nan nan\n")
     table8 = tmp_path / "tcon.txt"
     table8.write_text("0kHz 19.5 0.2\n0kHz 20.5 0.1\n70kHz 15 0.09\n")
     hist = tmp_path / "modes.hist"

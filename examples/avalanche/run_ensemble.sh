@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# Paper 000's geometry, one job at a time: a layer of H/d with free ends, LAYER d
+# long, on a rough base with 50 d of bare base on each side, observed in the
+# middle half of the layer (AVALANCHE_FREE=1, default), or a periodic layer
+# LAYER d long observed everywhere (AVALANCHE_FREE=0: the cheap variant of the
+# ensembles); one tilt ramp (0 or 70 kHz) of one packing per job,
+# so that every job finishes on its own and the ensemble is built by repeating
+# the command.  A job whose log already has its theta_m line is skipped; the
+# deposit of a packing is made by its first job and reused by the other.
+#
+# Usage: examples/avalanche/run_ensemble.sh BUILD_DIR H SEED JOB [H SEED JOB ...]
+#   JOB = 0 or 70e3: the tilt ramp at that frequency (Hz);
+#   JOB = tcon0 or tcon70e3: t_con above theta_m (paper 000 Fig. 8): from the
+#         last state of the ramp that did not flow (TAG.static.restart), the
+#         layer is tilted at once to theta_m + 1, + 2 and + 3 deg (one run each),
+#         and to the angles of AVALANCHE_TCON_ANGLES above theta_m (e.g. "19":
+#         paper 000's t_con at H = 6 d is given at 19 deg)
+#   e.g. run_ensemble.sh build 3 1 0 3 1 70e3      (H = 3 d, packing 1, both ramps)
+# Environment: AVALANCHE_FREE (1: free ends, default; 0: periodic),
+#   AVALANCHE_LAYER (layer length in d, default 400 with free ends, 80 periodic),
+#   AVALANCHE_OUT (default examples/avalanche/out/ensemble), AVALANCHE_NP (2),
+#   AVALANCHE_SOURCE (bottom: paper 000's source, default; base: the rough base),
+#   AVALANCHE_TFOLLOW (s, default 1.2 as paper 000), AVALANCHE_TSETTLE (s, 0.5),
+#   AVALANCHE_THETA0 (first tested angle; default 10 deg, 4 deg for H > 10 d at 70 kHz).
+# Outputs: OUT/H<H>/s<SEED>/{log.deposit,log.f0,log.f70,f*.series,f*.dump,...} and
+# one line per job in OUT/jobs.txt (angle, t_con, wall time); tools read them
+# with examples/avalanche/collect.py.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+build=${1:?usage: run_ensemble.sh BUILD_DIR H SEED FREQ [H SEED FREQ ...]}; shift
+build=$(cd "$build" 2>/dev/null && pwd || echo "$build")
+lmp=$build/lammps/lmp
+[ -x "$lmp" ] || { echo "run_ensemble: no LAMMPS executable at $lmp (build first: ./run.sh build)" >&2; exit 1; }
+[ $(($# % 3)) -eq 0 ] && [ $# -gt 0 ] || { echo "run_ensemble: arguments come in triples H SEED FREQ" >&2; exit 1; }
+free=${AVALANCHE_FREE:-1}
+if [ "$free" = 1 ]; then
+  layer=${AVALANCHE_LAYER:-400}
+  margin=50                                      # bare base on each side, d
+  L=$((layer + 2 * margin))
+  span=$(awk -v a="$layer" -v b="$L" 'BEGIN{printf "%.6f", a / b}')
+  obslo=$(awk -v a="$layer" -v b="$L" 'BEGIN{printf "%.6f", (b - a / 2) / (2 * b)}')   # middle half of the layer
+  obshi=$(awk -v x="$obslo" 'BEGIN{printf "%.6f", 1 - x}')
+else
+  layer=${AVALANCHE_LAYER:-80}; L=$layer; span=1; obslo=0; obshi=1
+fi
+kappa=0.3
+source=${AVALANCHE_SOURCE:-bottom}
+tfollow=${AVALANCHE_TFOLLOW:-1.2}
+tsettle=${AVALANCHE_TSETTLE:-0.5}
+top=${AVALANCHE_OUT:-$here/out/ensemble$([ "$free" = 1 ] || echo _periodic)}
+mkdir -p "$top"; top=$(cd "$top" && pwd)
+if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
+mpi=(mpirun -np "${AVALANCHE_NP:-2}")
+if mpirun --version 2>/dev/null | grep -q "Open MPI"; then mpi+=(--oversubscribe); fi
+lmprun() { "${mpi[@]}" "$lmp" -nocite -echo none -screen none "$@"; }
+
+while [ $# -gt 0 ]; do
+  H=$1 seed=$2 f=$3; shift 3
+  d=$top/H$H/s$seed; mkdir -p "$d"; cd "$d"
+  if [ "${f#tcon}" != "$f" ]; then
+    f=${f#tcon}; tag=f${f%e3}
+    tm=$(sed -n 's/.*theta_m = \([0-9.]*\) deg.*/\1/p' "log.$tag" 2>/dev/null)
+    if [ -z "$tm" ] || [ ! -f "$tag.static.restart" ]; then
+      echo "H$H s$seed tcon $tag: no theta_m or no $tag.static.restart (run the ramp first), skipped"; continue
+    fi
+    angles=$(awk -v a="$tm" -v extra="${AVALANCHE_TCON_ANGLES:-}" 'BEGIN{
+      for (k = 1; k <= 3; k++) printf "%.1f ", a + k
+      n = split(extra, e, " "); for (i = 1; i <= n; i++) if (e[i] > a + 1e-6) printf "%.1f ", e[i]}')
+    for th in $angles; do
+      ttag=tcon_${tag}_$th
+      if [ -f "log.$ttag" ] && grep -q 'theta_m =' "log.$ttag"; then continue; fi
+      t0=$SECONDS
+      lmprun -in "$here/in.avalanche" -var dir "$here" -var restart "$tag.static.restart" -var pre 0 \
+        -var tag "$ttag" -var freq "$f" -var kappa "$kappa" -var source "$source" -var theta0 "$th" -var thetamax "$th" \
+        -var tfollow "$tfollow" -var obslo "$obslo" -var obshi "$obshi" -var dumpevery 0 -log "log.$ttag"
+      echo "H$H s$seed $(grep -h 'theta_m =' "log.$ttag" | sed 's/^avalanche //')  layer $layer d free $free  wall $((SECONDS - t0)) s" | tee -a "$top/jobs.txt"
+    done
+    continue
+  fi
+  tag=f${f%e3}
+  if [ -f "log.$tag" ] && grep -q 'theta_m =' "log.$tag"; then
+    echo "H$H s$seed $tag: done before, skipped"; continue
+  fi
+  t0=$SECONDS
+  if ! { [ -f deposit.restart ] && grep -q '^deposit:' log.deposit 2>/dev/null; }; then
+    lmprun -in "$here/in.deposit" -var dir "$here" -var H "$H" -var L "$L" -var free "$free" -var span "$span" \
+      -var seed "$seed" -var out deposit.restart -log log.deposit
+  fi
+  theta0=${AVALANCHE_THETA0:-$(awk -v h="$H" -v f="$f" 'BEGIN{print (h > 10 && f > 0 ? 4 : 10)}')}
+  lmprun -in "$here/in.avalanche" -var dir "$here" -var restart deposit.restart -var tag "$tag" \
+    -var freq "$f" -var kappa "$kappa" -var source "$source" -var tfollow "$tfollow" -var tsettle "$tsettle" \
+    -var theta0 "$theta0" -var thetamax 30 -var obslo "$obslo" -var obshi "$obshi" \
+    -var dumpevery 50 -var dumplocal 1 -log "log.$tag"
+  line="H$H s$seed $(grep -h 'theta_m =' "log.$tag" | sed 's/^avalanche //')  layer $layer d free $free  wall $((SECONDS - t0)) s"
+  echo "$line" | tee -a "$top/jobs.txt"
+done
