@@ -22,7 +22,8 @@ if mpirun --version 2>/dev/null | grep -q "Open MPI"; then mpi+=(--oversubscribe
 
 # set tag Hd NP NU strain tskip freq: I_M = NU / sqrt(NP) (d/H)^(3/2); the
 # strain (sheared length over H, recording after tskip) shrinks with I_M so
-# that the cost, proportional to strain / I_M, stays bounded
+# that the cost, proportional to strain / I_M, stays bounded.  Records at
+# paper 004's 10 kHz: nrec = 10 kHz x d/U = 101 / NU records per d/U
 jobs() {
   case $1 in
     scan)  cat <<'EOF'
@@ -46,11 +47,13 @@ EOF
 
 for set in "$@"; do
   jobs "$set" | while read -r s tag Hd NP NU strain tskip freq; do
+    nrec=$(awk -v nu="$NU" 'BEGIN{printf "%.6g", 1e4 * 1e-3 / (nu * sqrt(9.81e-3))}')
     d=$top/$s/$tag; mkdir -p "$d"; cd "$d"
     if [ -f log.lammps ] && grep -q '^cavity result' log.lammps; then echo "$s/$tag: done before, skipped"; continue; fi
     t0=$SECONDS
+    # stdin from /dev/null: mpirun would read the rest of the job list
     "${mpi[@]}" "$lmp" -nocite -echo none -screen none -in "$here/in.cavity" -var dir "$here" -var tag cavity \
-      -var Hd "$Hd" -var NP "$NP" -var NU "$NU" -var strain "$strain" -var tskip "$tskip" -var freq "$freq" -log log.lammps
+      -var Hd "$Hd" -var NP "$NP" -var NU "$NU" -var strain "$strain" -var tskip "$tskip" -var freq "$freq" -var nrec "$nrec" -log log.lammps < /dev/null
     echo "$s/$tag: $(grep -h '^cavity cavity:' log.lammps | sed 's/^cavity cavity: //')  wall $((SECONDS - t0)) s" | tee -a "$top/runs.txt"
   done
 done
