@@ -3,6 +3,7 @@ cavity runs; matplotlib (Agg), PNG.  Each function takes plain arrays or
 dicts (not file paths) and the output path, so an example's collect script
 or a user's own runs can call them:
 
+  fig2_streamlines        time-averaged streamlines and the vortex centre
   fig3_vortex_and_force   ell/L and F/(PLd) against I_M, Eq. 4 fit and the
                           paper's curve (r1 0.53, r2 0.86, I_M^0 0.02)
   fig9_autocorrelation    C^i(Delta t) of the wall portions, threshold 0.15
@@ -186,5 +187,31 @@ def fig_volume_fraction(IM, phi, path, title=""):
     ax.semilogx(np.asarray(IM, float), np.asarray(phi, float), "o-")
     ax.set_xlabel(r"$I_M$")
     ax.set_ylabel(r"$\Phi_*$ (3D equivalent)")
+    ax.set_title(title)
+    _save(fig, path)
+
+
+def fig2_streamlines(xc, yc, vx, vy, L, path, centre=None, title=""):
+    """Fig. 2: streamlines of a time-averaged velocity field on bin centres
+    (flat arrays of fix ave/chunk bin/2d, NaN where empty), the side walls at
+    0 and L, the vortex centre (x, y) marked when given"""
+    x, y, u = cavity.to_grid(xc, yc, vx)
+    _, _, v = cavity.to_grid(xc, yc, vy)
+    rows = np.isfinite(u).any(axis=1)
+    x_in = (x > 0) & (x < L)
+    x, y, u, v = x[x_in], y[rows], u[rows][:, x_in], v[rows][:, x_in]
+    speed = np.hypot(u, v)
+    fig, ax = plt.subplots(figsize=(8.0, 8.0 * np.ptp(y) / max(L, 1e-30) + 1.5))
+    ax.streamplot(x, y, np.nan_to_num(u), np.nan_to_num(v), color=np.nan_to_num(speed), cmap="viridis",
+                  density=1.2, linewidth=0.7)
+    if centre is not None:
+        ax.plot(centre[0], centre[1], "r+", ms=12, mew=2)
+        ax.axvline(centre[0], color="r", ls=":", lw=0.8)
+    ax.set_xlim(0.0, L)
+    half = 0.5 * (np.diff(y).mean() if len(y) > 1 else 1.0)
+    ax.set_ylim(y.min() - half, y.max() + half)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
     ax.set_title(title)
     _save(fig, path)

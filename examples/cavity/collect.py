@@ -75,9 +75,11 @@ def analyse(run):
         vx = np.where(inside, cols["vx"], np.nan)
         vy = np.where(inside, cols["vy"], np.nan)
         try:
-            r["ell_over_L"] = float(cavity.vortex_centre(cols["Coord1"], cols["Coord2"], vx, vy, p["L"])[2])
+            xv, yv, ell = cavity.vortex_centre(cols["Coord1"], cols["Coord2"], vx, vy, p["L"])
+            r["ell_over_L"], centre = float(ell), (xv, yv)
         except (ValueError, IndexError):
-            r["ell_over_L"] = np.nan
+            r["ell_over_L"], centre = np.nan, None
+        field = (cols["Coord1"], cols["Coord2"], vx, vy, p["L"], centre)
     # three scales of force: samples for the PDFs and Eq. 7 fits
     snaps = cavity.read_dump(os.path.join(run, "cavity.contacts"))
     f = np.concatenate([cols["v_fwall"] for _, cols in snaps if len(cols["v_fwall"])])
@@ -100,7 +102,8 @@ def analyse(run):
         u = cavity.read_ave_time(us)
         r["mu_ratio"] = float(u["mu_ratio_mean"].mean())
         r["frac_below_half"] = float(u["frac_below_half"].mean())
-    return r, {"F": F, "portions": portions, "f": f, "C": C, "C_portions": C_portions, "dt_rec": dt_rec}
+    return r, {"F": F, "portions": portions, "f": f, "C": C, "C_portions": C_portions, "dt_rec": dt_rec,
+               "field": field if os.path.exists(flow) else None}
 
 
 def collect(top):
@@ -160,6 +163,10 @@ def figures(runs, fit, figdir):
                                fit=None if fit is None else fit[0], title="H/d = 10, L/H = 5")
     for n in (order[0], order[len(order) // 2], order[-1]):
         r, data = scan[n]
+        if data["field"] is not None:
+            xc, yc, vx, vy, L, centre = data["field"]
+            figs.fig2_streamlines(xc, yc, vx, vy, L, os.path.join(figdir, f"fig2_streamlines_{os.path.basename(n)}.png"),
+                                  centre=centre, title=f"$I_M$ = {r['I_M']:.2g}, $\\ell/L$ = {r['ell_over_L']:.2f}")
         lags = data["C_portions"] / 1.0
         figs.fig9_autocorrelation(data["dt_rec"] / r["period"], lags,
                                   os.path.join(figdir, f"fig9_autocorrelation_{os.path.basename(n)}.png"),

@@ -311,7 +311,7 @@ def test_figures_are_written(tmp_path):
 
     rng = np.random.default_rng(2)
     IM = np.array([1e-3, 5e-3, 2e-2, 8e-2, 0.3])
-    paths = {name: tmp_path / f"{name}.png" for name in ("f3", "f9", "f10", "f12", "f13", "f14", "phi")}
+    paths = {name: tmp_path / f"{name}.png" for name in ("f2", "f3", "f9", "f10", "f12", "f13", "f14", "phi")}
     cf.fig3_vortex_and_force(IM, [0.5, 0.5, 0.45, 0.35, 0.3],
                              cavity.mean_force_model(IM, 0.53, 0.86, 0.02) + 0.01 * rng.standard_normal(5),
                              paths["f3"], title="synthetic")
@@ -324,6 +324,9 @@ def test_figures_are_written(tmp_path):
     series = rng.gamma(3.0, 1.0, (3000, 10))
     cf.fig14_meso_pdfs(series, {1e-3: series, 1e-2: rng.exponential(1.0, (3000, 10))}, paths["f14"])
     cf.fig_volume_fraction(IM, [0.60, 0.60, 0.59, 0.57, 0.53], paths["phi"])
+    gx, gy = np.meshgrid(np.linspace(0.05, 4.95, 50), np.linspace(0.05, 0.95, 10))
+    cf.fig2_streamlines(gx.ravel(), gy.ravel(), (np.sin(np.pi * gx / 5) * np.cos(np.pi * gy)).ravel(),
+                        (-0.2 * np.cos(np.pi * gx / 5) * np.sin(np.pi * gy)).ravel(), 5.0, paths["f2"], centre=(2.5, 0.5))
     for path in paths.values():
         data = path.read_bytes()
         assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 5000
