@@ -124,6 +124,7 @@ def _pdfs_with_fits(samples, path, fits, bins, xlabel, title):
         left.plot(x, dens, color=colour, lw=1.0, label=f"$I_M$ = {im:.2g}")
         grid = np.linspace(1e-6, x.max(), 300)
         left.plot(grid, cavity.trunc_lognormal_pdf(grid, *fits[im]), "--", color=colour, lw=0.8)
+    left.set_xlim(0.0, 6.0)
     left.set_xlabel(xlabel)
     left.set_ylabel("PDF")
     left.set_title("(a)")

@@ -40,6 +40,14 @@ def wall_time(log):
     return np.nan
 
 
+def block_error(series, blocks=20):
+    """Standard error of the mean of a correlated series from the scatter of
+    the means of `blocks` consecutive blocks"""
+    n = len(series) // blocks
+    means = np.asarray(series[:n * blocks], float).reshape(blocks, n).mean(axis=1)
+    return float(means.std(ddof=1) / np.sqrt(blocks))
+
+
 def analyse(run):
     """The measurements of one run directory (None if it did not finish)."""
     log = os.path.join(run, "log.lammps")
@@ -60,7 +68,7 @@ def analyse(run):
          "NU": p["NU"], "Hd": p["Hd"], "freq": p["freq"], "grains": int(p["grains"]), "records": len(F),
          "recorded_HU": (p["nshear"] - p["nskip"]) * p["dt"] * p["U"] / p["H"],
          "recorded_s": (p["nshear"] - p["nskip"]) * p["dt"], "wall_s": wall_time(log),
-         "Fnorm": float(F.mean() / PLd), "Fnorm_sem": float(F.std() / PLd / np.sqrt(max(1, len(F) * dt_rec / period))),
+         "Fnorm": float(F.mean() / PLd), "Fnorm_sem": block_error(F) / PLd,
          "phi3d": float(cavity.volume_fraction_3d(wall["phi2d"].mean())), "h_over_H": float(wall["h"].mean() / p["H"]),
          "dtc_wall": float(cavity.correlation_time(C, dt_rec)), "dtc_portions": dtc_portions.tolist(),
          "dtc_mean": float(dtc_mean), "period": period, "dt_rec": dt_rec,
@@ -127,12 +135,13 @@ def print_tables(runs, fit):
     for name, (r, _) in sorted(runs.items(), key=lambda kv: (kv[0].split("/")[0], kv[1][0]["I_M"])):
         fw = r["fit_wall"]
         print(f"| {name} | {r['Hd']:g} | {r['NP']:g} | {r['NU']:g} | {r['I_M']:.3g} | {r['grains']} "
-              f"| {r['recorded_HU']:.0f}; {r['recorded_s']:.3g} | {r['Fnorm']:.3f} | {g(r.get('ell_over_L'), 2)} "
+              f"| {r['recorded_HU']:.0f}; {r['recorded_s']:.3g} | {r['Fnorm']:.3f} ± {r['Fnorm_sem']:.3f} | {g(r.get('ell_over_L'), 2)} "
               f"| {r['phi3d']:.3f} | {g(r['dtc_mean'] / r['period'], 2)} | {g(r['dtc_wall'] / r['period'], 2)} "
               f"| {r['cv_wall']:.2f}, {r['skew_wall']:.2f} | {fw[0]:.2f}, {fw[1]:.2f}, {fw[2]:.2g} | {r['wall_s']:.0f} |")
     if fit is not None:
-        (r1, r2, i0), (e1, e2, ei) = fit
-        print(f"\nEq. 4 fit of the scan: r1 = {r1:.3f} ± {e1:.3f}, r2 = {r2:.3f} ± {e2:.3f}, "
+        (r1, r2, i0), (e1, e2, ei), chi2 = fit
+        print(f"\nEq. 4 fit of the scan (weighted by the block errors, errors scaled by sqrt(chi2/dof) = "
+              f"{np.sqrt(chi2):.2f}): r1 = {r1:.3f} ± {e1:.3f}, r2 = {r2:.3f} ± {e2:.3f}, "
               f"I0 = {i0:.4f} ± {ei:.4f} (paper 004: 0.53, 0.86, 0.02)")
     us = {n: r for n, (r, _) in runs.items() if n.startswith("us/")}
     if us:
@@ -144,7 +153,7 @@ def print_tables(runs, fit):
             if not a or not b:
                 continue
             fa, fb = a["fit_wall"], b["fit_wall"]
-            print(f"| {a['I_M']:.3g} | {a['Fnorm']:.3f} / {b['Fnorm']:.3f} | {g(a.get('ell_over_L'), 2)} / "
+            print(f"| {a['I_M']:.3g} | {a['Fnorm']:.3f} ± {a['Fnorm_sem']:.3f} / {b['Fnorm']:.3f} ± {b['Fnorm_sem']:.3f} | {g(a.get('ell_over_L'), 2)} / "
                   f"{g(b.get('ell_over_L'), 2)} | {g(a['dtc_mean'] / a['period'], 2)} / {g(b['dtc_mean'] / b['period'], 2)} "
                   f"| {a['cv_wall']:.2f} / {b['cv_wall']:.2f} | {fa[0]:.2f}, {fa[1]:.2f}, {fa[2]:.2g} / "
                   f"{fb[0]:.2f}, {fb[1]:.2f}, {fb[2]:.2g} | {b.get('mu_ratio', np.nan):.3f}, "
@@ -188,12 +197,18 @@ def main(top=os.path.join(here, "out"), figdir=os.path.join(here, "figures")):
     scan = [r for n, (r, _) in runs.items() if n.startswith("scan/")]
     fit = None
     if len(scan) >= 4:
-        fit = cavity.fit_mean_force([r["I_M"] for r in scan], [r["Fnorm"] for r in scan])
+        I = np.array([r["I_M"] for r in scan])
+        Fn = np.array([r["Fnorm"] for r in scan])
+        sem = np.array([r["Fnorm_sem"] for r in scan])
+        params, errors = cavity.fit_mean_force(I, Fn, sigma=sem)
+        # the packings scatter more than the block errors say: errors scaled by sqrt(chi2/dof)
+        chi2 = float(np.sum(((Fn - cavity.mean_force_model(I, *params)) / sem) ** 2) / max(1, len(I) - 3))
+        fit = (params, tuple(e * max(1.0, np.sqrt(chi2)) for e in errors), chi2)
     print_tables(runs, fit)
     figures(runs, fit, figdir)
     with open(os.path.join(top, "summary.json"), "w") as f:
         json.dump({"runs": {n: r for n, (r, _) in runs.items()},
-                   "eq4_fit": None if fit is None else [list(map(float, fit[0])), list(map(float, fit[1]))]},
+                   "eq4_fit": None if fit is None else [list(map(float, fit[0])), list(map(float, fit[1])), fit[2]]},
                   f, indent=1, default=float)
 
 
