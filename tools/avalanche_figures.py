@@ -144,11 +144,15 @@ def fig_thetam(a):
 
 def fig_tcon(a):
     """Fig. 8 from lines "label theta t_con" (one per run; several packings
-    may give several points per label and angle)."""
+    may give several points per label and angle); labels starting with
+    "paper" are reference values, drawn as stars."""
     rows = [line.split() for line in open(a.table) if line.strip() and not line.startswith("#")]
     fig, ax = plt.subplots(figsize=(4.5, 3.4))
     for k, label in enumerate(dict.fromkeys(r[0] for r in rows)):
         pts = np.array([[float(r[1]), float(r[2])] for r in rows if r[0] == label])
+        if label.startswith("paper"):           # reference values: stars, no line
+            ax.plot(pts[:, 0], pts[:, 1], "*", ms=12, color="k" if "70" not in label else "tab:red", label=label)
+            continue
         pts = pts[np.argsort(pts[:, 0])]
         marker = "o" if "70" not in label else "^"
         ax.plot(pts[:, 0], pts[:, 1], marker, color=f"C{k}", label=label, alpha=0.8)

@@ -208,6 +208,7 @@ def figures(all_ens, summary, top, figdir):
                     for th, t in pts:
                         if np.isfinite(th) and np.isfinite(t):
                             f.write(f"H{H:g}_{tag[1:]}kHz {th:g} {t:g}\n")
+        f.write(f"paper000_H6_0kHz 19 {PAPER_TCON_H6_19DEG[0]}\npaper000_H6_70kHz 19 {PAPER_TCON_H6_19DEG[1]}\n")
     if os.path.getsize(table8):
         figs.main(["tcon", table8, "-o", os.path.join(figdir, "fig8_tcon.png"), "--dpi", "80"])
     for H in (6.0, 14.4):

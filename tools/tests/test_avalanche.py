@@ -217,7 +217,7 @@ def test_figures_from_synthetic_runs(tmp_path):
     table7 = tmp_path / "thetam.txt"
     table7.write_text("3 20 1.0 14.5 0.5 20 14.5\n6 19.5 1.2 15 0.7 nan nan\n")
     table8 = tmp_path / "tcon.txt"
-    table8.write_text("0kHz 19.5 0.2\n0kHz 20.5 0.1\n70kHz 15 0.09\n")
+    table8.write_text("0kHz 19.5 0.2\n0kHz 20.5 0.1\n70kHz 15 0.09\npaper_0kHz 19 1.15\n")
     hist = tmp_path / "modes.hist"
     hist.write_text("# Time-averaged data for fix hist\n# TimeStep Number-of-rows\n"
                     "100 3\n1 500 0.0004\n2 1500 0.0004\n3 2500 0.0002\n")
