@@ -68,6 +68,16 @@ def read_log(path):
     return blocks
 
 
+def wall_time(path):
+    """The "Total wall time: h:mm:ss" of a finished LAMMPS log, in seconds
+    (nan if the run did not finish)."""
+    for line in open(path):
+        if line.startswith("Total wall time:"):
+            h, m, s = (int(v) for v in line.split()[-1].split(":"))
+            return 3600 * h + 60 * m + s
+    return float("nan")
+
+
 def _is_number(word):
     try:
         float(word)

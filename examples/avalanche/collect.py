@@ -20,6 +20,7 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "..", "tools"))
 import numpy as np  # noqa: E402
+from lammps_log import wall_time  # noqa: E402
 
 import avalanche as av  # noqa: E402
 import avalanche_figures as figs  # noqa: E402
@@ -56,15 +57,6 @@ def deposit(log):
             length = re.search(r"box ([0-9.]+) d long", line)
             return int(n.group(1)), int(n.group(2)), float(h.group(1)), float(length.group(1))
     return 0, 0, np.nan, np.nan
-
-
-def wall_time(log):
-    """Total wall time of a LAMMPS log (s)."""
-    for line in open(log):
-        if line.startswith("Total wall time:"):
-            h, m, s = (int(v) for v in line.split()[-1].split(":"))
-            return 3600 * h + 60 * m + s
-    return np.nan
 
 
 def packing(path):

@@ -20,6 +20,7 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "..", "tools"))
 import numpy as np  # noqa: E402
+from lammps_log import wall_time  # noqa: E402
 
 import cavity  # noqa: E402
 import cavity_figures as figs  # noqa: E402
@@ -30,14 +31,6 @@ PAPER = {"r1": 0.53, "r2": 0.86, "I0": 0.02}
 def read_params(path):
     words = open(path).read().split()
     return {k: (v if k == "tag" else float(v)) for k, v in zip(words[::2], words[1::2])}
-
-
-def wall_time(log):
-    for line in open(log):
-        if line.startswith("Total wall time:"):
-            h, m, s = (int(v) for v in line.split()[-1].split(":"))
-            return 3600 * h + 60 * m + s
-    return np.nan
 
 
 def block_error(series, blocks=20):

@@ -53,3 +53,13 @@ def test_unfinished_run_is_kept(logfile):
 def test_unknown_column_names_the_columns(logfile):
     with pytest.raises(KeyError, match="no thermo column 'Temp'"):
         read_log(logfile)[0]["Temp"]
+
+
+def test_wall_time(tmp_path):
+    from lammps_log import wall_time
+    done = tmp_path / "done.log"
+    done.write_text("Loop time of 1.5 on 2 procs for 10 steps with 4 atoms\nTotal wall time: 1:02:03\n")
+    assert wall_time(done) == 3723
+    cut = tmp_path / "cut.log"
+    cut.write_text("Loop time of 1.5 on 2 procs for 10 steps with 4 atoms\n")
+    assert wall_time(cut) != wall_time(cut)        # nan: the run did not finish
