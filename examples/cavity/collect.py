@@ -169,8 +169,7 @@ def figures(runs, fit, figdir):
             xc, yc, vx, vy, L, centre = data["field"]
             figs.fig2_streamlines(xc, yc, vx, vy, L, os.path.join(figdir, f"fig2_streamlines_{os.path.basename(n)}.png"),
                                   centre=centre, title=f"$I_M$ = {r['I_M']:.2g}, $\\ell/L$ = {r['ell_over_L']:.2f}")
-        lags = data["C_portions"] / 1.0
-        figs.fig9_autocorrelation(data["dt_rec"] / r["period"], lags,
+        figs.fig9_autocorrelation(data["dt_rec"] / r["period"], data["C_portions"],
                                   os.path.join(figdir, f"fig9_autocorrelation_{os.path.basename(n)}.png"),
                                   title=f"$I_M$ = {r['I_M']:.2g} (lag in d/U)")
     figs.fig10_correlation_times(IM, [np.array(scan[n][0]["dtc_portions"]) / scan[n][0]["period"] for n in order],
