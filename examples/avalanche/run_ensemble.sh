@@ -21,7 +21,14 @@
 #   AVALANCHE_OUT (default examples/avalanche/out/ensemble), AVALANCHE_NP (2),
 #   AVALANCHE_SOURCE (bottom: paper 000's source, default; base: the rough base),
 #   AVALANCHE_TFOLLOW (s, default 1.2 as paper 000), AVALANCHE_TSETTLE (s, 0.5),
-#   AVALANCHE_THETA0 (first tested angle; default 10 deg, 4 deg for H > 10 d at 70 kHz).
+#   AVALANCHE_THETA0 (first tested angle; default 10 deg, 4 deg for H > 10 d at 70 kHz),
+#   AVALANCHE_PIECE (simulated seconds per LAMMPS process, "auto": 20000 / atoms,
+#   about 20 min on 2 cores at 70 kHz, plus the angle under way; 0: one process),
+#   AVALANCHE_MAXPIECES (processes per ramp in one call; default: until the ramp ends).
+# A ramp runs as pieces: each angle's end state is kept (TAG.last0/1.restart,
+# named by TAG.resume), so a ramp that paused or was killed goes on from its
+# last whole angle when the command is repeated; outputs written after that
+# angle by a killed piece are cut off first.
 # Outputs: OUT/H<H>/s<SEED>/{log.deposit,log.f0,log.f70,f*.series,f*.dump,...} and
 # one line per job in OUT/jobs.txt (angle, t_con, wall time); tools read them
 # with examples/avalanche/collect.py.
@@ -81,16 +88,49 @@ while [ $# -gt 0 ]; do
   if [ -f "log.$tag" ] && grep -q 'theta_m =' "log.$tag"; then
     echo "H$H s$seed $tag: done before, skipped"; continue
   fi
-  t0=$SECONDS
   if ! { [ -f deposit.restart ] && grep -q '^deposit:' log.deposit 2>/dev/null; }; then
+    rm -f "log.$tag" "$tag.resume" "$tag.wall"      # a new packing: its ramps start anew
     lmprun -in "$here/in.deposit" -var dir "$here" -var H "$H" -var L "$L" -var free "$free" -var span "$span" \
       -var seed "$seed" -var out deposit.restart -log log.deposit
   fi
-  theta0=${AVALANCHE_THETA0:-$(awk -v h="$H" -v f="$f" 'BEGIN{print (h > 10 && f > 0 ? 4 : 10)}')}
-  lmprun -in "$here/in.avalanche" -var dir "$here" -var restart deposit.restart -var tag "$tag" \
-    -var freq "$f" -var kappa "$kappa" -var source "$source" -var tfollow "$tfollow" -var tsettle "$tsettle" \
-    -var theta0 "$theta0" -var thetamax 30 -var obslo "$obslo" -var obshi "$obshi" \
-    -var dumpevery 50 -var dumplocal 1 -log "log.$tag"
-  line="H$H s$seed $(grep -h 'theta_m =' "log.$tag" | sed 's/^avalanche //')  layer $layer d free $free  wall $((SECONDS - t0)) s"
-  echo "$line" | tee -a "$top/jobs.txt"
+  piece=${AVALANCHE_PIECE:-auto}
+  if [ "$piece" = auto ]; then
+    piece=$(sed -n 's/^deposit: \([0-9]*\) grains on \([0-9]*\) base.*/\1 \2/p' log.deposit |
+            awk '{printf "%.1f", 20000 / ($1 + $2)}')
+  fi
+  common=(-var dir "$here" -var tag "$tag" -var freq "$f" -var kappa "$kappa" -var source "$source"
+          -var tfollow "$tfollow" -var tsettle "$tsettle" -var thetamax 30 -var obslo "$obslo" -var obshi "$obshi"
+          -var dumpevery 50 -var dumplocal 1 -var tpiece "$piece")
+  npiece=0
+  while ! grep -q 'theta_m =' "log.$tag" 2>/dev/null; do
+    if [ -n "${AVALANCHE_MAXPIECES:-}" ] && [ "$npiece" -ge "$AVALANCHE_MAXPIECES" ]; then
+      echo "H$H s$seed $tag: paused after $npiece piece(s), at $(cut -d' ' -f1 "$tag.resume") deg; repeat the command to go on"
+      break
+    fi
+    t0=$SECONDS
+    if [ -f "log.$tag" ] && [ -f "$tag.resume" ]; then
+      # go on after the last whole angle; drop what a killed piece wrote after it
+      read -r theta tres step last < "$tag.resume"
+      awk -v t="$tres" '/^#/ || $1 + 0 < t - 5e-5' "$tag.series" > "$tag.series.cut" && mv "$tag.series.cut" "$tag.series"
+      for dump in "$tag.dump" "$tag.contacts"; do
+        [ -f "$dump" ] || continue
+        awk -v s="$step" '/^ITEM: TIMESTEP/ {getline t; keep = (t + 0 < s); if (keep) print $0 "\n" t; next} keep' \
+          "$dump" > "$dump.cut" && mv "$dump.cut" "$dump"
+      done
+      theta0=$(awk -v a="$theta" 'BEGIN{printf "%.2f", a + 0.5}')
+      lmprun -in "$here/in.avalanche" "${common[@]}" -var restart "$last" -var pre 0 -var theta0 "$theta0" \
+        -var append 1 -log "log.$tag.resume"
+    else
+      rm -f "$tag.resume"
+      theta0=${AVALANCHE_THETA0:-$(awk -v h="$H" -v f="$f" 'BEGIN{print (h > 10 && f > 0 ? 4 : 10)}')}
+      lmprun -in "$here/in.avalanche" "${common[@]}" -var restart deposit.restart -var theta0 "$theta0" -log "log.$tag"
+    fi
+    echo $((SECONDS - t0)) >> "$tag.wall"
+    npiece=$((npiece + 1))
+  done
+  if grep -q 'theta_m =' "log.$tag"; then
+    wall=$(awk '{s += $1} END {print s}' "$tag.wall")
+    line="H$H s$seed $(grep -h 'theta_m =' "log.$tag" | sed 's/^avalanche //')  layer $layer d free $free  wall $wall s"
+    echo "$line" | tee -a "$top/jobs.txt"
+  fi
 done

@@ -1,0 +1,122 @@
+"""A tilt ramp of examples/avalanche run as pieces (run_ensemble.sh with
+AVALANCHE_PIECE): every piece ends after a whole angle, the next one goes on
+from that angle's restart, and the ramp reads as one -- the angles follow each
+other without a gap or a repeat, the series and the dumps go forward in time,
+the answer line is written once.  A piece killed in the middle of an angle
+loses that angle only: what it wrote after the last whole angle is cut off
+before the ramp goes on.  Before its first pause the pieced ramp is the
+uninterrupted one, line for line (same deck, same rank count)."""
+import os
+import re
+import subprocess
+
+import pytest
+
+LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
+HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "avalanche")
+ENSEMBLE = os.path.join(HERE, "run_ensemble.sh")
+ANGLE = re.compile(r"^angle +([0-9.]+) deg: (\w+)")
+
+
+def build_dir():
+    return os.path.dirname(os.path.dirname(os.path.abspath(LMP)))
+
+
+def run_ensemble(out, **env):
+    """One 0 Hz ramp of a small periodic layer (3 d thick, 20 d long, from 16 deg)."""
+    environ = dict(os.environ, AVALANCHE_OUT=str(out), AVALANCHE_NP="1", AVALANCHE_FREE="0",
+                   AVALANCHE_LAYER="20", AVALANCHE_THETA0="16", **env)
+    done = subprocess.run(["bash", ENSEMBLE, build_dir(), "3", "7", "0"], env=environ,
+                          capture_output=True, text=True, timeout=900)
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    return done.stdout
+
+
+def angles(log):
+    return [(float(m.group(1)), m.group(2)) for m in map(ANGLE.match, open(log)) if m]
+
+
+def angle_lines(log):
+    return [line for line in open(log) if ANGLE.match(line)]
+
+
+def series_times(path):
+    return [float(line.split()[0]) for line in open(path) if not line.startswith("#")]
+
+
+def dump_steps(path):
+    steps, lines = [], open(path).read().split("\n")
+    for k, line in enumerate(lines):
+        if line.startswith("ITEM: TIMESTEP"):
+            steps.append(int(lines[k + 1]))
+    return steps
+
+
+@pytest.fixture(scope="module")
+def whole(tmp_path_factory):
+    out = tmp_path_factory.mktemp("whole")
+    run_ensemble(out, AVALANCHE_PIECE="0")
+    return out / "H3" / "s7"
+
+
+@pytest.fixture(scope="module")
+def pieced(tmp_path_factory, whole):
+    out = tmp_path_factory.mktemp("pieced")
+    # the same packing: the deposit is made by the first job of a packing
+    os.makedirs(out / "H3" / "s7")
+    for name in ("deposit.restart", "log.deposit"):
+        (out / "H3" / "s7" / name).write_bytes((whole / name).read_bytes())
+    said = run_ensemble(out, AVALANCHE_PIECE="0.2", AVALANCHE_MAXPIECES="1")
+    path = out / "H3" / "s7"
+    assert "paused after 1 piece" in said
+    first = angle_lines(path / "log.f0")
+    # a killed piece: output written past the last whole angle
+    theta, tres, step, last = open(path / "f0.resume").read().split()
+    with open(path / "f0.series", "a") as f:
+        f.write(f"{float(tres) + 0.0005:.4f} 99 0 0 0 0 0 0 0 0\n")
+    with open(path / "f0.dump", "a") as f:
+        f.write(f"ITEM: TIMESTEP\n{int(step) + 100}\nITEM: NUMBER OF ATOMS\n0\n")
+    with open(path / "log.f0", "a") as f:
+        f.write("(killed here)\n")
+    said = run_ensemble(out, AVALANCHE_PIECE="0.2")
+    return path, first, float(theta), said
+
+
+def test_first_piece_is_the_uninterrupted_ramp(whole, pieced):
+    path, first, theta, _ = pieced
+    assert first and float(ANGLE.match(first[-1]).group(1)) == theta
+    assert first == angle_lines(whole / "log.f0")[:len(first)]
+
+
+def test_pieces_read_as_one_ramp(pieced):
+    path, _, _, said = pieced
+    log = open(path / "log.f0").read()
+    steps = angles(path / "log.f0")
+    assert len(steps) > 4
+    thetas = [t for t, _ in steps]
+    assert thetas == pytest.approx([16 + 0.5 * k for k in range(len(thetas))])
+    assert steps[-1][1] == "uniform" and [s for _, s in steps[:-1]].count("uniform") == 0
+    assert len(re.findall(r"theta_m = ", log)) == 1
+    assert log.count("paused after") >= 2, "pieces of 0.2 s pause every few angles"
+    assert f"theta_m = {thetas[-1]:.2f} deg" in said, "jobs.txt line"
+    assert len(open(path / "f0.wall").read().split()) == log.count("paused after") + 1
+
+
+def test_outputs_go_forward_in_time(pieced):
+    path, _, _, _ = pieced
+    times = series_times(path / "f0.series")
+    assert all(b >= a for a, b in zip(times, times[1:])), "the killed piece's series line is cut"
+    steps = dump_steps(path / "f0.dump")
+    assert all(b > a for a, b in zip(steps, steps[1:])), "the killed piece's frame is cut"
+    steps = dump_steps(path / "f0.contacts")
+    assert all(b > a for a, b in zip(steps, steps[1:]))
+
+
+@pytest.mark.parametrize("var, value, what", [("tpiece", "-1", "tpiece must be >= 0"),
+                                               ("append", "2", "append must be 0 (a new ramp) or 1")])
+def test_bad_piece_variables(tmp_path, var, value, what):
+    done = subprocess.run([LMP, "-in", os.path.join(HERE, "in.avalanche"), "-var", "dir", HERE,
+                           "-var", var, value, "-log", "log.bad", "-screen", "none", "-nocite"],
+                          cwd=tmp_path, capture_output=True, text=True, timeout=60)
+    text = open(tmp_path / "log.bad").read()
+    assert f"ERROR: {what}" in text, text[-500:]
