@@ -70,12 +70,15 @@ def read_log(path):
 
 def wall_time(path):
     """The "Total wall time: h:mm:ss" of a finished LAMMPS log, in seconds
-    (nan if the run did not finish)."""
+    (nan if no run finished).  A log that several processes appended to (a
+    ramp run as pieces: `log file append`) has one such line per process that
+    finished; their sum is returned."""
+    total, found = 0, False
     for line in open(path):
         if line.startswith("Total wall time:"):
             h, m, s = (int(v) for v in line.split()[-1].split(":"))
-            return 3600 * h + 60 * m + s
-    return float("nan")
+            total, found = total + 3600 * h + 60 * m + s, True
+    return total if found else float("nan")
 
 
 def _is_number(word):

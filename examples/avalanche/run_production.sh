@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # The runs behind RESULTS.md, as jobs of run_ensemble.sh: one tilt ramp of one
 # packing per job, each finishing on its own (about 1 to 15 minutes on 2
-# cores, see RESULTS.md); a job already done is skipped, so the command can be
-# repeated until everything is there.  Outputs in out/ensemble_periodic and
+# cores, see RESULTS.md; the long free-ends ramps run as pieces of about 20
+# minutes); a job already done is skipped and a ramp that was stopped goes on
+# from its last whole angle, so the command can be repeated until everything
+# is there.  Outputs in out/ensemble_periodic and
 # out/ensemble (git-ignored); examples/avalanche/collect.py reads them.
 #
 # Usage: examples/avalanche/run_production.sh BUILD_DIR [SET ...]
 #   periodic  H/d = 3, 6 (L = 80 d) and 14.4 (L = 40 d), periodic, packings
 #             4871 1 2 3, 0 and 70 kHz                                  (default)
 #   tcon      t_con above theta_m for H/d = 6 (and at 19 deg) and 14.4
-#   free      H/d = 3 with free ends, 400 d, packings 1 2 3 4
+#   free      H/d = 3, 6 and 14.4 with free ends, 400 d, packings 1 2 3 4
 #   more      H/d = 8.7 and 11.4 (L = 40 d), periodic, packings 4871 1 2 3
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -35,7 +37,15 @@ for set in "${sets[@]}"; do
         AVALANCHE_FREE=0 AVALANCHE_LAYER=40 "$E" "$build" 14.4 "$s" tcon0 14.4 "$s" tcon70e3
       done ;;
     free)
-      for s in 1 2 3 4; do "$E" "$build" 3 "$s" 0 3 "$s" 70e3; done ;;
+      # 0 Hz ramps of every H/d first (cheap), then the 70 kHz ones; a 70 kHz
+      # ramp creeps at every angle (1.3 s each) and runs as pieces of about
+      # 20 min; at H = 14.4 d it is several hours
+      for H in 3 6 14.4; do
+        for s in 1 2 3 4; do "$E" "$build" "$H" "$s" 0; done
+      done
+      for H in 3 6 14.4; do
+        for s in 1 2 3 4; do "$E" "$build" "$H" "$s" 70e3; done
+      done ;;
     more)
       for H in 8.7 11.4; do
         for s in "${seeds[@]}"; do

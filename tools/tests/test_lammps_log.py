@@ -63,3 +63,7 @@ def test_wall_time(tmp_path):
     cut = tmp_path / "cut.log"
     cut.write_text("Loop time of 1.5 on 2 procs for 10 steps with 4 atoms\n")
     assert wall_time(cut) != wall_time(cut)        # nan: the run did not finish
+    pieces = tmp_path / "pieces.log"
+    pieces.write_text("Total wall time: 0:00:30\nLoop time of 1.5 on 2 procs for 10 steps with 4 atoms\n"
+                      "Total wall time: 0:01:00\n")
+    assert wall_time(pieces) == 90
