@@ -120,13 +120,19 @@ def fig_thetam(a):
     """Fig. 7 from a table of ensembles: lines "H/d theta0 sd0 theta70 sd70
     [paper0 paper70]" (means and standard deviations over the packings, nan
     where missing); paper 000's trend (20 deg at 3 d, -0.26 deg/d, 2 deg lower
-    with 70 kHz) is drawn as dashed lines."""
+    with 70 kHz) is drawn as dashed lines.  --free TABLE adds a second
+    geometry (free ends) in the same format, drawn with open squares."""
     t = np.atleast_2d(np.loadtxt(a.table))
     fig, ax = plt.subplots(figsize=(4.5, 3.4))
-    for col, c, label in ((1, "tab:blue", "0 kHz"), (3, "tab:orange", "70 kHz")):
-        ok = np.isfinite(t[:, col])
-        ax.errorbar(t[ok, col], t[ok, 0], xerr=t[ok, col + 1], fmt="o-", color=c, capsize=3,
-                    label=f"{label} (this code, mean ± s.d.)")
+    sets = [(t, "o-", None, a.label)]
+    if a.free:
+        sets.append((np.atleast_2d(np.loadtxt(a.free)), "s:", "none", a.free_label))
+    for table, fmt, fill, name in sets:
+        for col, c, label in ((1, "tab:blue", "0 kHz"), (3, "tab:orange", "70 kHz")):
+            ok = np.isfinite(table[:, col])
+            if ok.any():
+                ax.errorbar(table[ok, col], table[ok, 0], xerr=table[ok, col + 1], fmt=fmt, color=c, capsize=3,
+                            label=f"{label}, {name} (mean ± s.d.)", **({"mfc": fill} if fill else {}))
     h = np.linspace(3, 14.4, 2)
     ax.plot(20 - 0.26 * (h - 3), h, "--", color="tab:blue", lw=0.8, label="paper 000 trend, 0 kHz")
     ax.plot(18 - 0.26 * (h - 3), h, "--", color="tab:orange", lw=0.8, label="paper 000: 2° lower, 70 kHz")
@@ -250,6 +256,9 @@ def main(argv=None):
     s.add_argument("--theta", type=float, action="append", required=True)
     t = sub.add_parser("thetam")
     t.add_argument("table")
+    t.add_argument("--label", default="this code")
+    t.add_argument("--free", help="a second table (free ends), drawn with open squares")
+    t.add_argument("--free-label", default="free ends")
     c = sub.add_parser("tcon")
     c.add_argument("table")
     ch = sub.add_parser("chains")

@@ -97,6 +97,36 @@ def ensembles(top):
     return out
 
 
+ANGLE_MU = re.compile(r"^angle +([0-9.]+) deg: (\w+) .* mean mu\*/mu ([0-9.]+)")
+
+
+def last_mu_factor(log):
+    """mean mu*/mu at the end of the last angle before theta_m (nan if none)."""
+    values = [float(m.group(3)) for m in map(ANGLE_MU.match, open(log)) if m and m.group(2) != "uniform"]
+    return values[-1] if values else np.nan
+
+
+def kappa_study(top):
+    """Rows (kappa, H, seed, theta_m 0 Hz, theta_m 70 kHz, shift, mean mu*/mu
+    below theta_m) of the 70 kHz ramps in OUT/kappa/k<kappa>/H<H>/s<seed>,
+    each beside the same packing's ramps at the default kappa_scale 0.3 in
+    ensemble_periodic."""
+    rows = []
+    for d in sorted(glob.glob(os.path.join(top, "kappa", "k*", "H*", "s*"))):
+        kdir, hdir = os.path.dirname(os.path.dirname(d)), os.path.dirname(d)
+        kappa, H = float(os.path.basename(kdir)[1:]), float(os.path.basename(hdir)[1:])
+        ref = os.path.join(top, "ensemble_periodic", os.path.basename(hdir), os.path.basename(d))
+        t0 = result(os.path.join(ref, "log.f0"))[0]
+        for k, path in ((0.3, ref), (kappa, d)):
+            log = os.path.join(path, "log.f70")
+            if os.path.exists(log) and np.isfinite(result(log)[0]):
+                t70 = result(log)[0]
+                row = (k, H, os.path.basename(d)[1:], t0, t70, t0 - t70, last_mu_factor(log))
+                if row not in rows:
+                    rows.append(row)
+    return sorted(rows)
+
+
 def mean_sd(values):
     v = np.array([x for x in values if np.isfinite(x)])
     if len(v) == 0:
@@ -177,19 +207,28 @@ def print_tables(all_ens, summary):
                         print(f"- H = {H:g} d, {tag[1:]} kHz: " + ", ".join(f"{th:g}° {t:.2f} s" for th, t in pts))
 
 
+def thetam_table(rows, path):
+    """Fig. 7's table: H/d, theta_m mean and s.d. at 0 and 70 kHz, paper 000's values."""
+    with open(path, "w") as f:
+        for r in rows:
+            p = PAPER.get(r["H"], (np.nan, np.nan))
+            f.write(f"{r['H_measured']:g} {r['theta0'][0]:g} {r['theta0'][1]:g} {r['theta70'][0]:g} "
+                    f"{r['theta70'][1]:g} {p[0]:g} {p[1]:g}\n")
+
+
 def figures(all_ens, summary, top, figdir):
     os.makedirs(figdir, exist_ok=True)
     label = "periodic" if "periodic" in all_ens else next(iter(all_ens), None)
     if label is None:
         return
-    rows, _, _ = summary[label]
     table7 = os.path.join(top, "thetam.txt")
-    with open(table7, "w") as f:
-        for r in rows:
-            p = PAPER.get(r["H"], (np.nan, np.nan))
-            f.write(f"{r['H_measured']:g} {r['theta0'][0]:g} {r['theta0'][1]:g} {r['theta70'][0]:g} "
-                    f"{r['theta70'][1]:g} {p[0]:g} {p[1]:g}\n")
-    figs.main(["thetam", table7, "-o", os.path.join(figdir, "fig7_thetam.png"), "--dpi", "80"])
+    thetam_table(summary[label][0], table7)
+    args = ["thetam", table7, "--label", label]
+    free = next((g for g in summary if g.startswith("free")), None)
+    if free and free != label:
+        thetam_table(summary[free][0], os.path.join(top, "thetam_free.txt"))
+        args += ["--free", os.path.join(top, "thetam_free.txt"), "--free-label", free]
+    figs.main(args + ["-o", os.path.join(figdir, "fig7_thetam.png"), "--dpi", "80"])
     by_h = all_ens[label]
     table8 = os.path.join(top, "tcon.txt")
     with open(table8, "w") as f:
@@ -226,10 +265,21 @@ def figures(all_ens, summary, top, figdir):
             figs.main(args + ["-o", os.path.join(figdir, f"fig6_9_sigma_H{H:g}.png"), "--dpi", "80"])
 
 
+def print_kappa(rows):
+    if not rows:
+        return
+    print("\n### 70 kHz shift against kappa_scale (one packing, periodic)\n")
+    print("| kappa_scale | H/d | packing | θ_m 0 kHz | θ_m 70 kHz | shift | mean μ*/μ before θ_m |")
+    print("|---|---|---|---|---|---|---|")
+    for k, H, seed, t0, t70, shift, mu in rows:
+        print(f"| {k:g} | {H:g} | {seed} | {t0:g}° | {t70:g}° | {shift:g}° | {mu:.3f} |")
+
+
 def main(top=os.path.join(here, "out"), figdir=os.path.join(here, "figures")):
     all_ens = ensembles(top)
     summary = {label: summarise(by_h) for label, by_h in all_ens.items()}
     print_tables(all_ens, summary)
+    print_kappa(kappa_study(top))
     figures(all_ens, summary, top, figdir)
     with open(os.path.join(top, "summary.json"), "w") as f:
         json.dump({label: {"rows": rows, "slope0": s0, "slope70": s70} for label, (rows, s0, s70) in summary.items()},

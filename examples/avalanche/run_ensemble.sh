@@ -20,6 +20,7 @@
 #   AVALANCHE_LAYER (layer length in d, default 400 with free ends, 80 periodic),
 #   AVALANCHE_OUT (default examples/avalanche/out/ensemble), AVALANCHE_NP (2),
 #   AVALANCHE_SOURCE (bottom: paper 000's source, default; base: the rough base),
+#   AVALANCHE_KAPPA (kappa_scale of the vibration network, default 0.3),
 #   AVALANCHE_TFOLLOW (s, default 1.2 as paper 000), AVALANCHE_TSETTLE (s, 0.5),
 #   AVALANCHE_THETA0 (first tested angle; default 10 deg, 4 deg for H > 10 d at 70 kHz),
 #   AVALANCHE_PIECE (simulated seconds per LAMMPS process, "auto": 20000 / atoms,
@@ -50,7 +51,7 @@ if [ "$free" = 1 ]; then
 else
   layer=${AVALANCHE_LAYER:-80}; L=$layer; span=1; obslo=0; obshi=1
 fi
-kappa=0.3
+kappa=${AVALANCHE_KAPPA:-0.3}                 # kappa_scale (calibrate.py, RESULTS.md)
 source=${AVALANCHE_SOURCE:-bottom}
 tfollow=${AVALANCHE_TFOLLOW:-1.2}
 tsettle=${AVALANCHE_TSETTLE:-0.5}

@@ -224,7 +224,8 @@ def test_figures_from_synthetic_runs(tmp_path):
     h = figs.read_ave_time_vector(hist)
     np.testing.assert_allclose(h[:, 1], [500, 1500, 2500])
     runs = [["modes", str(dump), str(contacts), "--f0", "1"], ["modes", "--hist", str(hist)], ["sigma", str(series), "--theta", "11"],
-            ["thetam", str(table7)], ["tcon", str(table8)], ["chains", str(dump), str(contacts)]]
+            ["thetam", str(table7)], ["thetam", str(table7), "--free", str(table7), "--label", "periodic"],
+            ["tcon", str(table8)], ["chains", str(dump), str(contacts)]]
     for k, args in enumerate(runs):
         out = tmp_path / f"fig{k}.png"
         assert figs.main(args + ["-o", str(out), "--dpi", "40"]) == 0
