@@ -13,6 +13,7 @@
 #   JOB = tcon0 or tcon70e3: t_con above theta_m (paper 000 Fig. 8): from the
 #         last state of the ramp that did not flow (TAG.static.restart), the
 #         layer is tilted at once to theta_m + 1, + 2 and + 3 deg (one run each),
+#         (AVALANCHE_TCON_STEPS, default "1 2 3"; "" for none),
 #         and to the angles of AVALANCHE_TCON_ANGLES above theta_m (e.g. "19":
 #         paper 000's t_con at H = 6 d is given at 19 deg)
 #   e.g. run_ensemble.sh build 3 1 0 3 1 70e3      (H = 3 d, packing 1, both ramps)
@@ -71,8 +72,8 @@ while [ $# -gt 0 ]; do
     if [ -z "$tm" ] || [ ! -f "$tag.static.restart" ]; then
       echo "H$H s$seed tcon $tag: no theta_m or no $tag.static.restart (run the ramp first), skipped"; continue
     fi
-    angles=$(awk -v a="$tm" -v extra="${AVALANCHE_TCON_ANGLES:-}" 'BEGIN{
-      for (k = 1; k <= 3; k++) printf "%.1f ", a + k
+    angles=$(awk -v a="$tm" -v steps="${AVALANCHE_TCON_STEPS-1 2 3}" -v extra="${AVALANCHE_TCON_ANGLES:-}" 'BEGIN{
+      n = split(steps, s, " "); for (k = 1; k <= n; k++) printf "%.1f ", a + s[k]
       n = split(extra, e, " "); for (i = 1; i <= n; i++) if (e[i] > a + 1e-6) printf "%.1f ", e[i]}')
     for th in $angles; do
       ttag=tcon_${tag}_$th
