@@ -131,7 +131,8 @@ def fig_thetam(a):
         for col, c, label in ((1, "tab:blue", "0 kHz"), (3, "tab:orange", "70 kHz")):
             ok = np.isfinite(table[:, col])
             if ok.any():
-                ax.errorbar(table[ok, col], table[ok, 0], xerr=table[ok, col + 1], fmt=fmt, color=c, capsize=3,
+                ax.errorbar(table[ok, col], table[ok, 0], xerr=np.nan_to_num(table[ok, col + 1]), fmt=fmt, color=c,
+                            capsize=3,
                             label=f"{label}, {name} (mean ± s.d.)", **({"mfc": fill} if fill else {}))
     h = np.linspace(3, 14.4, 2)
     ax.plot(20 - 0.26 * (h - 3), h, "--", color="tab:blue", lw=0.8, label="paper 000 trend, 0 kHz")

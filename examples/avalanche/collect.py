@@ -73,6 +73,7 @@ def packing(path):
             m = re.search(r"\((at rest|NOT at rest after tsettle|no pre-ramp)\)", open(log).read())
             rest = m.group(1) if m else ""
         p[f"{tag}_rest"] = rest
+        p[f"{tag}_onset"] = flow_onset(log) if os.path.exists(log) and np.isfinite(p[tag][0]) else np.nan
         p[f"tcon_{tag}"] = []
         for t in sorted(glob.glob(os.path.join(path, f"log.tcon_{tag}_*"))):
             theta = float(t.rsplit("_", 1)[1])
@@ -98,6 +99,16 @@ def ensembles(top):
 
 
 ANGLE_MU = re.compile(r"^angle +([0-9.]+) deg: (\w+) .* mean mu\*/mu ([0-9.]+)")
+
+
+def flow_onset(log):
+    """The first angle of a ramp that ended with a flow: partial (more than
+    half of the observed grains still mobile after 0.1 + tfollow s, not
+    uniform) or uniform; nan if none.  It is at or below theta_m."""
+    for m in map(ANGLE_MU.match, open(log)):
+        if m and m.group(2) in ("partial", "uniform"):
+            return float(m.group(1))
+    return np.nan
 
 
 def last_mu_factor(log):
@@ -151,9 +162,13 @@ def summarise(by_h):
         t0 = [p["f0"][0] for p in packs]
         t70 = [p["f70"][0] for p in packs]
         shift = [a - b for a, b in zip(t0, t70) if np.isfinite(a) and np.isfinite(b)]
+        o0 = [p["f0_onset"] for p in packs]
+        o70 = [p["f70_onset"] for p in packs]
+        oshift = [a - b for a, b in zip(o0, o70) if np.isfinite(a) and np.isfinite(b)]
         rows.append({"H": H, "n": len(packs),
                      "H_measured": mean_sd([p["H_measured"] for p in packs])[0],
                      "theta0": mean_sd(t0), "theta70": mean_sd(t70), "shift": mean_sd(shift),
+                     "onset0": mean_sd(o0), "onset70": mean_sd(o70), "onset_shift": mean_sd(oshift),
                      "tcon0": mean_sd([p["f0"][1] for p in packs]), "tcon70": mean_sd([p["f70"][1] for p in packs]),
                      "wall0": mean_sd([p["f0_wall"] for p in packs])[0],
                      "wall70": mean_sd([p["f70_wall"] for p in packs])[0],
@@ -188,13 +203,19 @@ def print_tables(all_ens, summary):
             print(f"| {r['H']:g} ({r['H_measured']:.2f}) | {r['n']} | {r['grains']} + {r['base']}, {r['length']:g} d "
                   f"| {fmt(r['theta0'])}° | {fmt(r['theta70'])}° | {fmt(r['shift'])}° ({se:.2f}°) "
                   f"| {fmt(r['tcon0'])} / {fmt(r['tcon70'])} | {ptxt} | {r['wall0']:.0f} / {r['wall70']:.0f} |")
+        print("\nfirst angle with a flow that spreads (partial or uniform), mean ± s.d.:")
+        for r in rows:
+            m, s, n = r["onset_shift"]
+            se = s / np.sqrt(n) if n > 1 else np.nan
+            print(f"- H = {r['H']:g} d: 0 kHz {fmt(r['onset0'])}°, 70 kHz {fmt(r['onset70'])}°, "
+                  f"shift {fmt(r['onset_shift'])}° (s.e. {se:.2f}°)")
         print(f"\nslope of θ_m(H/d), all packings: 0 kHz {s0[0]:+.3f} ± {s0[1]:.3f} °/d, "
               f"70 kHz {s70[0]:+.3f} ± {s70[1]:.3f} °/d (paper 000 ≈ {PAPER_SLOPE}°/d)")
-        print("\nper packing (seed: θ_m 0 / 70 kHz, t_con 0 / 70 kHz):")
+        print("\nper packing (seed: θ_m 0 / 70 kHz, t_con 0 / 70 kHz, first spreading flow 0 / 70 kHz):")
         for H, packs in sorted(by_h.items()):
             print(f"- H = {H:g} d: " + "; ".join(
-                f"s{p['seed']}: {p['f0'][0]:g} / {p['f70'][0]:g}°, {p['f0'][1]:.2f} / {p['f70'][1]:.2f} s"
-                for p in packs))
+                f"s{p['seed']}: {p['f0'][0]:g} / {p['f70'][0]:g}°, {p['f0'][1]:.2f} / {p['f70'][1]:.2f} s, "
+                f"{p['f0_onset']:g} / {p['f70_onset']:g}°" for p in packs))
         tc = [(H, tag, th, t) for H, packs in sorted(by_h.items()) for p in packs
               for tag in ("f0", "f70") for th, t in p[f"tcon_{tag}"]]
         if tc:
@@ -232,13 +253,14 @@ def figures(all_ens, summary, top, figdir):
     by_h = all_ens[label]
     table8 = os.path.join(top, "tcon.txt")
     with open(table8, "w") as f:
-        for H in (6.0, 11.4, 14.4):
-            for p in by_h.get(H, []):
-                for tag in ("f0", "f70"):
-                    pts = [(p[tag][0], p[tag][1])] + p[f"tcon_{tag}"]
-                    for th, t in pts:
-                        if np.isfinite(th) and np.isfinite(t):
-                            f.write(f"H{H:g}_{tag[1:]}kHz {th:g} {t:g}\n")
+        for geometry, suffix in ((label, ""), (free, "_free_ends")):
+            for H in (6.0, 11.4, 14.4):
+                for p in all_ens.get(geometry, {}).get(H, []) if geometry else []:
+                    for tag in ("f0", "f70"):
+                        pts = [(p[tag][0], p[tag][1])] + p[f"tcon_{tag}"]
+                        for th, t in pts:
+                            if np.isfinite(th) and np.isfinite(t):
+                                f.write(f"H{H:g}_{tag[1:]}kHz{suffix} {th:g} {t:g}\n")
         f.write(f"paper000_H6_0kHz 19 {PAPER_TCON_H6_19DEG[0]}\npaper000_H6_70kHz 19 {PAPER_TCON_H6_19DEG[1]}\n")
     if os.path.getsize(table8):
         figs.main(["tcon", table8, "-o", os.path.join(figdir, "fig8_tcon.png"), "--dpi", "80"])

@@ -1,0 +1,89 @@
+"""examples/avalanche/collect.py on synthetic run directories: the per-packing
+numbers it reads from the logs (theta_m, t_con, first spreading flow, mean
+mu*/mu before theta_m) and the ensemble statistics built on them (mean,
+standard deviation, paired shift, slope of theta_m(H/d)) against values
+worked out by hand."""
+import importlib.util
+import os
+
+import numpy as np
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+COLLECT = os.path.join(HERE, "..", "..", "examples", "avalanche", "collect.py")
+
+
+@pytest.fixture(scope="module")
+def collect():
+    spec = importlib.util.spec_from_file_location("avalanche_collect", COLLECT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def angle(theta, state, mu=1.0):
+    return (f"angle {theta:5.2f} deg: {state} after 0.100 s  max E_k/E_t 1e-09  max mobile fraction 0.000  "
+            f"sigma1 1 sigma2 1  mean mu*/mu {mu:.3f}\n")
+
+
+def ramp(path, tag, states, theta_m, tcon, mu=1.0):
+    lines = [angle(th, st, mu) for th, st in states]
+    lines.append(f"avalanche {tag}: freq 0 Hz  theta_m = {theta_m:.2f} deg  t_con = {tcon:.3f} s\n")
+    (path / f"log.{tag}").write_text("".join(lines))
+
+
+def packing(top, geometry, H, seed, hm, f0, f70, mu70=0.6):
+    """f0, f70: (states, theta_m, t_con)."""
+    path = top / geometry / f"H{H:g}" / f"s{seed}"
+    os.makedirs(path)
+    (path / "log.deposit").write_text(f"deposit: 500 grains on 80 base grains, box 80.0 d long, "
+                                      f"layer H = {hm:.2f} d (target {H}), free ends 0\n")
+    ramp(path, "f0", *f0)
+    ramp(path, "f70", *f70, mu=mu70)
+    return path
+
+
+@pytest.fixture
+def out(tmp_path):
+    g = "ensemble_periodic"
+    packing(tmp_path, g, 3, 1, 3.0, ([(19, "stable"), (19.5, "uniform")], 19.5, 0.4),
+            ([(15, "local"), (15.5, "partial"), (16, "uniform")], 16, 0.2))
+    packing(tmp_path, g, 3, 2, 3.0, ([(20, "stopped"), (20.5, "uniform")], 20.5, 0.6),
+            ([(16, "uniform")], 16, 0.3))
+    packing(tmp_path, g, 6, 1, 6.0, ([(18, "stable"), (18.5, "uniform")], 18.5, 0.5),
+            ([(14, "local"), (14.5, "uniform")], 14.5, 0.1))
+    packing(tmp_path, g, 6, 2, 6.0, ([(17.5, "uniform")], 17.5, 0.5),
+            ([(13.5, "partial"), (14, "partial"), (14.5, "uniform")], 14.5, 0.1))
+    k = packing(tmp_path, "kappa/k0.1", 6, 1, 6.0, ([(18, "stable")], 18.5, 0.5),
+                ([(17, "stable"), (17.5, "uniform")], 17.5, 0.3), mu70=0.9)
+    os.remove(k / "log.f0")
+    return tmp_path
+
+
+def test_packings_read_from_the_logs(collect, out):
+    by_h = collect.ensembles(str(out))["periodic"]
+    p = {(H, q["seed"]): q for H, packs in by_h.items() for q in packs}
+    assert p[(3.0, "1")]["f0"] == (19.5, 0.4) and p[(3.0, "1")]["f70"] == (16.0, 0.2)
+    assert p[(3.0, "1")]["f70_onset"] == 15.5, "the first partial angle"
+    assert p[(6.0, "2")]["f70_onset"] == 13.5
+    assert p[(6.0, "2")]["f0_onset"] == 17.5, "a uniform first angle is the onset"
+
+
+def test_ensemble_statistics(collect, out):
+    rows, s0, s70 = collect.summarise(collect.ensembles(str(out))["periodic"])
+    r3, r6 = rows
+    assert r3["theta0"][:2] == pytest.approx((20.0, np.std([19.5, 20.5], ddof=1)))
+    assert r3["shift"][:2] == pytest.approx((4.0, np.std([3.5, 4.5], ddof=1)))
+    assert r6["shift"][0] == pytest.approx(3.5)
+    assert r3["onset_shift"][0] == pytest.approx(np.mean([19.5 - 15.5, 20.5 - 16]))
+    # slope of theta_m against the measured H/d: (18 - 20) / 3
+    assert s0[0] == pytest.approx(-2.0 / 3.0)
+    assert s70[0] == pytest.approx((14.5 - 16.0) / 3.0)
+
+
+def test_kappa_rows_beside_the_default(collect, out):
+    rows = collect.kappa_study(str(out))
+    assert [(k, seed, t70, shift) for k, H, seed, t0, t70, shift, mu in rows] == \
+        [(0.1, "1", 17.5, 1.0), (0.3, "1", 14.5, 4.0)]
+    mu = {k: m for k, *_, m in rows}
+    assert mu == {0.1: 0.9, 0.3: 0.6}, "mean mu*/mu of the last angle before theta_m"
