@@ -10,9 +10,13 @@
 # Usage: examples/avalanche/run_production.sh BUILD_DIR [SET ...]
 #   periodic  H/d = 3, 6 (L = 80 d) and 14.4 (L = 40 d), periodic, packings
 #             4871 1 2 3, 0 and 70 kHz                                  (default)
-#   tcon      t_con above theta_m for H/d = 6 (and at 19 deg) and 14.4
+#   tcon      t_con above theta_m for H/d = 6 (and at 19 deg) and 14.4, and for
+#             the free-ends H/d = 6 layers at 0 Hz (after the set free)
 #   free      H/d = 3, 6 and 14.4 with free ends, 400 d, packings 1 2 3 4
 #   more      H/d = 8.7 and 11.4 (L = 40 d), periodic, packings 4871 1 2 3
+#   kappa     the 70 kHz shift against kappa_scale: H/d = 6 (L = 80 d), packings
+#             1 and 2 of the periodic set, kappa_scale 0.1, 0.2 and 1 (0.3 is
+#             the periodic set), in out/kappa/k<kappa>
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${1:-$here/../../build}; shift || true
@@ -32,6 +36,10 @@ for set in "${sets[@]}"; do
     tcon)
       for s in "${seeds[@]}"; do
         AVALANCHE_TCON_ANGLES=19 AVALANCHE_FREE=0 AVALANCHE_LAYER=80 "$E" "$build" 6 "$s" tcon0 6 "$s" tcon70e3
+      done
+      # free ends, H = 6 d, 0 Hz: theta_m + 1 deg and 19 deg (paper 000's angle)
+      for s in 1 2 3 4; do
+        AVALANCHE_TCON_STEPS=1 AVALANCHE_TCON_ANGLES=19 "$E" "$build" 6 "$s" tcon0
       done
       for s in "${seeds[@]}"; do
         AVALANCHE_FREE=0 AVALANCHE_LAYER=40 "$E" "$build" 14.4 "$s" tcon0 14.4 "$s" tcon70e3
@@ -53,6 +61,14 @@ for set in "${sets[@]}"; do
           AVALANCHE_FREE=0 AVALANCHE_LAYER=40 AVALANCHE_THETA0=6 "$E" "$build" "$H" "$s" 70e3
         done
       done ;;
-    *) echo "run_production: unknown set $set (periodic, tcon, free, more)" >&2; exit 1 ;;
+    kappa)
+      for s in 1 2; do
+        for k in 0.1 0.2 1; do
+          d=$here/out/kappa/k$k/H6/s$s; mkdir -p "$d"
+          cp -n "$here/out/ensemble_periodic/H6/s$s/deposit.restart" "$here/out/ensemble_periodic/H6/s$s/log.deposit" "$d/"
+          AVALANCHE_KAPPA=$k AVALANCHE_OUT=$here/out/kappa/k$k AVALANCHE_FREE=0 AVALANCHE_LAYER=80 "$E" "$build" 6 "$s" 70e3
+        done
+      done ;;
+    *) echo "run_production: unknown set $set (periodic, tcon, free, more, kappa)" >&2; exit 1 ;;
   esac
 done
