@@ -9,9 +9,11 @@
     avalanche_figures.py thetam TABLE -o fig7.png
         Fig. 7: theta_m against H/d; TABLE lines "H/d theta0 sd0 theta70 sd70"
         (ensemble means and standard deviations; optional 6th and 7th columns:
-        paper 000's values, nan if unknown)
+        paper 000's values, nan if unknown); --free TABLE2 adds the free-ends ensembles
     avalanche_figures.py tcon   TABLE -o fig8.png
         Fig. 8: t_con against theta; TABLE lines "label theta t_con" (one per run)
+    avalanche_figures.py kappa  TABLE -o kappa_shift.png
+        the 70 kHz shift against kappa_scale; TABLE lines "kappa H seed shift mu_factor"
     avalanche_figures.py chains RUN.dump RUN.contacts [--frame K] -o fig10.png
         Fig. 10: force chains, width proportional to f_n, colour 1 - mu*/mu
     avalanche_figures.py calibration calibration.json -o calibration.png
@@ -149,6 +151,27 @@ def fig_thetam(a):
     return fig
 
 
+def fig_kappa(a):
+    """The 70 kHz shift against kappa_scale, from lines "kappa H seed shift
+    mu_factor" (one per 70 kHz ramp): every ramp, the mean at each kappa, and
+    paper 000's shift of about 2 deg as a band."""
+    t = np.atleast_2d(np.loadtxt(a.table, usecols=(0, 1, 3, 4)))
+    fig, ax = plt.subplots(figsize=(4.5, 3.4))
+    ax.axhspan(1.5, 2.5, color="0.85", label="paper 000: ≈ 2°")
+    ax.axhline(0, color="0.5", lw=0.6)
+    for k, H in enumerate(np.unique(t[:, 1])):
+        rows = t[t[:, 1] == H]
+        kappas = np.unique(rows[:, 0])
+        ax.plot(rows[:, 0], rows[:, 2], "o", color=f"C{k}", alpha=0.6, label=f"H = {H:g} d, one ramp each")
+        ax.plot(kappas, [rows[rows[:, 0] == x, 2].mean() for x in kappas], "-", color=f"C{k}", label="mean")
+    ax.set_xscale("log")
+    ax.set_xlabel("kappa_scale")
+    ax.set_ylabel(r"$\theta_m$(0 kHz) $-$ $\theta_m$(70 kHz) (°)")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
 def fig_tcon(a):
     """Fig. 8 from lines "label theta t_con" (one per run; several packings
     may give several points per label and angle); labels starting with
@@ -262,17 +285,19 @@ def main(argv=None):
     t.add_argument("--free-label", default="free ends")
     c = sub.add_parser("tcon")
     c.add_argument("table")
+    kap = sub.add_parser("kappa")
+    kap.add_argument("table")
     ch = sub.add_parser("chains")
     ch.add_argument("dump")
     ch.add_argument("contacts")
     ch.add_argument("--frame", type=int, default=-1)
     cal = sub.add_parser("calibration")
     cal.add_argument("results")
-    for q in (m, s, t, c, ch, cal):
+    for q in (m, s, t, c, kap, ch, cal):
         q.add_argument("-o", "--output", required=True)
         q.add_argument("--dpi", type=int, default=110)
     a = p.parse_args(argv)
-    fig = {"modes": fig_modes, "sigma": fig_sigma, "thetam": fig_thetam, "tcon": fig_tcon,
+    fig = {"modes": fig_modes, "sigma": fig_sigma, "thetam": fig_thetam, "tcon": fig_tcon, "kappa": fig_kappa,
            "chains": fig_chains, "calibration": fig_calibration}[a.cmd](a)
     fig.savefig(a.output, dpi=a.dpi, bbox_inches="tight")
     print(f"wrote {a.output}")

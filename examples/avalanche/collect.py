@@ -9,7 +9,9 @@ log.f70 and the t_con runs log.tcon_f*_<theta>.  Prints markdown tables:
 packings, theta_m(H/d) per geometry with means and standard deviations, the
 fitted slope of theta_m(H/d) with its standard error, the 70 kHz shift (paired
 by packing), t_con; writes OUT_DIR/summary.json and the figures fig7_thetam,
-fig8_tcon, fig10_chains_H6, fig3_modes_H6, fig6_9_sigma_H14.4 (PNG).
+fig8_tcon, fig10_chains_H6, fig3_modes_H6, fig6_9_sigma_H14.4 and, with the
+runs of `run_production.sh build kappa` (OUT_DIR/kappa/k<kappa>/), the table
+and figure kappa_shift of the 70 kHz shift against kappa_scale (PNG).
 """
 import glob
 import json
@@ -297,12 +299,24 @@ def print_kappa(rows):
         print(f"| {k:g} | {H:g} | {seed} | {t0:g}° | {t70:g}° | {shift:g}° | {mu:.3f} |")
 
 
+def kappa_figure(rows, top, figdir):
+    if not rows:
+        return
+    table = os.path.join(top, "kappa.txt")
+    with open(table, "w") as f:
+        for k, H, seed, t0, t70, shift, mu in rows:
+            f.write(f"{k:g} {H:g} {seed} {shift:g} {mu:g}\n")
+    figs.main(["kappa", table, "-o", os.path.join(figdir, "kappa_shift.png"), "--dpi", "80"])
+
+
 def main(top=os.path.join(here, "out"), figdir=os.path.join(here, "figures")):
     all_ens = ensembles(top)
     summary = {label: summarise(by_h) for label, by_h in all_ens.items()}
     print_tables(all_ens, summary)
-    print_kappa(kappa_study(top))
+    kappa_rows = kappa_study(top)
+    print_kappa(kappa_rows)
     figures(all_ens, summary, top, figdir)
+    kappa_figure(kappa_rows, top, figdir)
     with open(os.path.join(top, "summary.json"), "w") as f:
         json.dump({label: {"rows": rows, "slope0": s0, "slope70": s70} for label, (rows, s0, s70) in summary.items()},
                   f, indent=1, default=float)

@@ -216,6 +216,8 @@ def test_figures_from_synthetic_runs(tmp_path):
                                         np.ones(40), np.zeros(40)]))
     table7 = tmp_path / "thetam.txt"
     table7.write_text("3 20 1.0 14.5 0.5 20 14.5\n6 19.5 1.2 15 0.7 nan nan\n")
+    tablek = tmp_path / "kappa.txt"
+    tablek.write_text("0.1 6 1 0.5 0.9\n0.3 6 1 5 0.6\n0.3 6 2 4 0.6\n")
     table8 = tmp_path / "tcon.txt"
     table8.write_text("0kHz 19.5 0.2\n0kHz 20.5 0.1\n70kHz 15 0.09\npaper_0kHz 19 1.15\n")
     hist = tmp_path / "modes.hist"
@@ -225,7 +227,7 @@ def test_figures_from_synthetic_runs(tmp_path):
     np.testing.assert_allclose(h[:, 1], [500, 1500, 2500])
     runs = [["modes", str(dump), str(contacts), "--f0", "1"], ["modes", "--hist", str(hist)], ["sigma", str(series), "--theta", "11"],
             ["thetam", str(table7)], ["thetam", str(table7), "--free", str(table7), "--label", "periodic"],
-            ["tcon", str(table8)], ["chains", str(dump), str(contacts)]]
+            ["tcon", str(table8)], ["kappa", str(tablek)], ["chains", str(dump), str(contacts)]]
     for k, args in enumerate(runs):
         out = tmp_path / f"fig{k}.png"
         assert figs.main(args + ["-o", str(out), "--dpi", "40"]) == 0
