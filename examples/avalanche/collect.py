@@ -292,7 +292,7 @@ def figures(all_ens, summary, top, figdir):
 def print_kappa(rows):
     if not rows:
         return
-    print("\n### 70 kHz shift against kappa_scale (one packing, periodic)\n")
+    print("\n### 70 kHz shift against kappa_scale (periodic; packings of the periodic set)\n")
     print("| kappa_scale | H/d | packing | θ_m 0 kHz | θ_m 70 kHz | shift | mean μ*/μ before θ_m |")
     print("|---|---|---|---|---|---|---|")
     for k, H, seed, t0, t70, shift, mu in rows:
