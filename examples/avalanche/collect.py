@@ -203,14 +203,14 @@ def print_tables(all_ens, summary):
             m, s, n = r["shift"]
             se = s / np.sqrt(n) if n > 1 else np.nan
             print(f"| {r['H']:g} ({r['H_measured']:.2f}) | {r['n']} | {r['grains']} + {r['base']}, {r['length']:g} d "
-                  f"| {fmt(r['theta0'])}° | {fmt(r['theta70'])}° | {fmt(r['shift'])}° ({se:.2f}°) "
+                  f"| {fmt(r['theta0'])}° | {fmt(r['theta70'])}° | {fmt(r['shift'])}° ({fmt((se, np.nan, 1))}°) "
                   f"| {fmt(r['tcon0'])} / {fmt(r['tcon70'])} | {ptxt} | {r['wall0']:.0f} / {r['wall70']:.0f} |")
         print("\nfirst angle with a flow that spreads (partial or uniform), mean ± s.d.:")
         for r in rows:
             m, s, n = r["onset_shift"]
             se = s / np.sqrt(n) if n > 1 else np.nan
             print(f"- H = {r['H']:g} d: 0 kHz {fmt(r['onset0'])}°, 70 kHz {fmt(r['onset70'])}°, "
-                  f"shift {fmt(r['onset_shift'])}° (s.e. {se:.2f}°)")
+                  f"shift {fmt(r['onset_shift'])}° (s.e. {fmt((se, np.nan, 1))}°)")
         print(f"\nslope of θ_m(H/d), all packings: 0 kHz {s0[0]:+.3f} ± {s0[1]:.3f} °/d, "
               f"70 kHz {s70[0]:+.3f} ± {s70[1]:.3f} °/d (paper 000 ≈ {PAPER_SLOPE}°/d)")
         print("\nper packing (seed: θ_m 0 / 70 kHz, t_con 0 / 70 kHz, first spreading flow 0 / 70 kHz):")
