@@ -2,7 +2,7 @@
 """Analysis of inclined-plane avalanche runs (paper 000, examples/avalanche).
 
 Reads LAMMPS dump files (dump custom of the grains, dump local of the contacts
-written by fix acoustic/mindlin) and the per-millisecond series file written by
+written by fix acoustic/mindlin; tools/lammps_output.py) and the per-millisecond series file written by
 examples/avalanche/in.avalanche, and computes
 
   sigma_l     Eq. 3.1 of paper 000: normalised standard deviation of the
@@ -25,9 +25,11 @@ Units are those of the run (SI for examples/avalanche).  Command line:
 """
 import argparse
 import sys
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
+
+from lammps_output import Snapshot, read_dump
 
 EPS_E = 3e-8      # paper 000: E_k/E_t threshold of a stable state
 EPS_SIGMA1 = 0.3  # paper 000: sigma_1 (top half) of a uniform flow
@@ -35,56 +37,6 @@ EPS_SIGMA2 = 0.9  # paper 000: sigma_2 (bottom half) of a uniform flow
 
 
 # ---------------------------------------------------------------- reading
-
-@dataclass
-class Frame:
-    """One snapshot of a LAMMPS dump: timestep, box and named columns."""
-    timestep: int
-    box: np.ndarray                       # (3, 2) lo/hi per axis
-    columns: dict = field(default_factory=dict)
-
-    def __getitem__(self, name):
-        try:
-            return self.columns[name]
-        except KeyError:
-            raise KeyError(f"no column '{name}' in the dump; columns are "
-                           f"{list(self.columns)}") from None
-
-    def __contains__(self, name):
-        return name in self.columns
-
-    def __len__(self):
-        return len(next(iter(self.columns.values()))) if self.columns else 0
-
-
-def read_dump(path):
-    """All frames of a text dump custom (ITEM: ATOMS) or dump local (ITEM: ENTRIES)."""
-    frames = []
-    with open(path) as f:
-        lines = f.read().splitlines()
-    k = 0
-    while k < len(lines):
-        if not lines[k].startswith("ITEM: TIMESTEP"):
-            k += 1
-            continue
-        step = int(lines[k + 1].split()[0])
-        k += 2
-        assert lines[k].startswith("ITEM: NUMBER OF"), f"{path}: bad dump header at line {k + 1}"
-        n = int(lines[k + 1])
-        k += 2
-        box = np.zeros((3, 2))
-        if lines[k].startswith("ITEM: BOX BOUNDS"):
-            for a in range(3):
-                box[a] = [float(v) for v in lines[k + 1 + a].split()[:2]]
-            k += 4
-        header = lines[k].split()
-        assert header[1] in ("ATOMS", "ENTRIES"), f"{path}: unexpected '{lines[k]}'"
-        names = header[2:]
-        data = np.loadtxt(lines[k + 1:k + 1 + n], ndmin=2) if n > 0 else np.zeros((0, len(names)))
-        k += 1 + n
-        frames.append(Frame(step, box, {name: data[:, c] for c, name in enumerate(names)}))
-    return frames
-
 
 CONTACT_COLUMNS = ["i", "j", "fn", "kn", "Ut", "mu_ratio"]
 
@@ -96,8 +48,8 @@ def contact_columns(frame):
         return frame
     if len(names) != 6:
         raise ValueError(f"expected the 6 columns of fix acoustic/mindlin, got {names}")
-    return Frame(frame.timestep, frame.box,
-                 {new: frame.columns[old] for new, old in zip(CONTACT_COLUMNS, names)})
+    return Snapshot(frame.timestep, frame.box,
+                    {new: frame.columns[old] for new, old in zip(CONTACT_COLUMNS, names)})
 
 
 SERIES_COLUMNS = ["time", "theta", "ratio", "sigma1", "sigma2", "vx1", "vx2", "mobile",

@@ -34,33 +34,15 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
 import avalanche as av  # noqa: E402
+from lammps_output import read_ave_time_vector, read_dump  # noqa: E402
 
 
 def _frames(dump, contacts, frame):
-    atoms = av.read_dump(dump)[frame]
-    match = [c for c in av.read_dump(contacts) if c.timestep == atoms.timestep]
+    atoms = read_dump(dump)[frame]
+    match = [c for c in read_dump(contacts) if c.timestep == atoms.timestep]
     if not match:
         sys.exit(f"no contact frame at timestep {atoms.timestep} in {contacts}")
     return atoms, av.contact_columns(match[0])
-
-
-def read_ave_time_vector(path):
-    """Last block of a fix ave/time ... mode vector file: array of rows (index, c1, c2, ...)."""
-    blocks, rows, left = [], [], 0
-    for line in open(path):
-        if line.startswith("#") or not line.strip():
-            continue
-        w = line.split()
-        if left == 0:
-            if rows:
-                blocks.append(np.array(rows))
-            rows, left = [], int(w[1])
-            continue
-        rows.append([float(v) for v in w])
-        left -= 1
-    if rows:
-        blocks.append(np.array(rows))
-    return blocks[-1]
 
 
 def fig_modes(a):
@@ -69,8 +51,8 @@ def fig_modes(a):
     fig, ax = plt.subplots(figsize=(5, 3.2))
     title = []
     if a.hist:
-        h = read_ave_time_vector(a.hist)
-        centre, dens = h[:, 1] / 1e3, h[:, 2] * 1e3          # per kHz
+        h = read_ave_time_vector(a.hist)[-1][1]              # last block: centre, density
+        centre, dens = h[:, 0] / 1e3, h[:, 1] * 1e3          # per kHz
         width = centre[1] - centre[0]
         ax.bar(centre, dens, width=width, color="tab:blue", alpha=0.7, label="compute vibration/modes")
         title.append(f"{os.path.basename(a.hist)}")

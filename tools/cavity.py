@@ -1,14 +1,11 @@
 """Analysis of granular lid-driven cavity runs (paper 004, Kneib et al., PRE 96,
 042906, 2017; examples/cavity).
 
-Reads the standard LAMMPS outputs of a cavity run and turns them into paper
-004's quantities:
+Turns the standard LAMMPS outputs of a cavity run, read with
+tools/lammps_output.py, into paper 004's quantities:
 
-  files       read_ave_time (fix ave/time, scalar mode: the wall forces F and
-              F_1 .. F_10), read_ave_chunk and time_average_chunks (fix
-              ave/chunk on a bin/2d grid: the mean velocity field), read_dump
-              (text dump custom or local with many snapshots: the grain-wall
-              contacts);
+  chunks      time_average_chunks (the blocks of fix ave/chunk on a bin/2d
+              grid averaged in time: the mean velocity field);
   Eq. 1-3     pressure_from_NP, velocity_from_NU, inertial_number (I_M) and
               inertial_number_from_NP_NU;
   Eq. 4       mean_force_model and fit_mean_force (F/(PLd) against I_M);
@@ -27,11 +24,11 @@ Reads the standard LAMMPS outputs of a cavity run and turns them into paper
 
 Units are those of the run (SI for examples/cavity).  Typical use:
 
-    import cavity
-    wall = cavity.read_ave_time("run.wall.txt")          # F, F_1 .. F_10
+    import cavity, lammps_output
+    wall = lammps_output.read_ave_time("run.wall.txt")   # F, F_1 .. F_10
     C = cavity.autocorrelation(wall["F_5"], 2000)
     dtc = cavity.correlation_time(C, dt_record)
-    flow, counts = cavity.time_average_chunks(cavity.read_ave_chunk("run.flow"))
+    flow, counts = cavity.time_average_chunks(lammps_output.read_ave_chunk("run.flow"))
     x0, y0, ell_L = cavity.vortex_centre(flow["Coord1"], flow["Coord2"],
                                          flow["vx"], flow["vy"], L)
     mu, sigma, f0 = cavity.fit_trunc_lognormal(F / F.mean())
@@ -45,76 +42,13 @@ from scipy import optimize, special
 
 PAPER_EQ4 = (0.53, 0.86, 0.02)    # paper 004 Fig. 3b: r1, r2, I_M^0 of Eq. 4
 THRESHOLD = 0.15                  # paper 004 Eq. 6: C(Delta t_c) = 0.15
-INTEGER_COLUMNS = ("id", "type", "mol", "proc", "procp1")
 
 
 # ---------------------------------------------------------------------------
-# files
-
-def read_ave_time(path):
-    """A fix ave/time file in scalar mode: dict column name -> array.
-
-    Lines starting with '#' are comments; the last comment line before the
-    first data line names the columns ("# TimeStep name1 name2 ..."; a
-    title2 of the user's is taken as it is).  Extra header words beyond the
-    number of data columns are dropped, missing ones are named c<k>.  The
-    first column is also available as 'TimeStep' (integers)."""
-    with open(path) as handle:
-        lines = handle.read().splitlines()
-    header, rows = None, []
-    for line in lines:
-        if line.startswith("#"):
-            if not rows:
-                header = line
-        elif line.strip():
-            rows.append(line)
-    names = header.lstrip("#").split() if header else []
-    if not rows:
-        return {name: np.zeros(0) for name in names} | {"TimeStep": np.zeros(0, dtype=np.int64)}
-    data = np.loadtxt(rows, ndmin=2, comments=None)
-    ncol = data.shape[1]
-    names = names[:ncol] + [f"c{k}" for k in range(len(names), ncol)]
-    columns = {name: data[:, k] for k, name in enumerate(names)}
-    columns["TimeStep"] = np.rint(data[:, 0]).astype(np.int64)
-    return columns
-
-
-def read_ave_chunk(path):
-    """A fix ave/chunk file: list of (timestep, dict column -> array).
-
-    Format: three comment lines, the third naming the columns of the rows
-    ("# Chunk Coord1 Coord2 Ncount name ..."; "# Chunk OrigID ..." with
-    compress yes), then blocks of a line "timestep nchunks total-count"
-    followed by nchunks rows.  'Chunk' (and 'OrigID') are integers."""
-    with open(path) as handle:
-        lines = handle.read().splitlines()
-    comments = [line for line in lines if line.startswith("#")]
-    if len(comments) < 3:
-        raise ValueError(f"{path}: expected the 3 comment lines of fix ave/chunk")
-    names = comments[2].lstrip("#").split()
-    data = [line for line in lines if line.strip() and not line.startswith("#")]
-    blocks, k = [], 0
-    while k < len(data):
-        words = data[k].split()
-        step, nchunk = int(words[0]), int(words[1])
-        rows = data[k + 1:k + 1 + nchunk]
-        if len(rows) < nchunk:            # a block cut short by a running job
-            break
-        values = np.loadtxt(rows, ndmin=2, comments=None) if nchunk else np.zeros((0, len(names)))
-        if values.shape[1] != len(names):
-            raise ValueError(f"{path}: {values.shape[1]} columns in the block of step {step}, "
-                             f"header names {len(names)}")
-        columns = {name: values[:, c] for c, name in enumerate(names)}
-        for name in ("Chunk", "OrigID"):
-            if name in columns:
-                columns[name] = np.rint(columns[name]).astype(np.int64)
-        blocks.append((step, columns))
-        k += 1 + nchunk
-    return blocks
-
+# the mean flow
 
 def time_average_chunks(blocks, first_step=None):
-    """Average of the blocks of read_ave_chunk (those with timestep >=
+    """Average of the blocks of lammps_output.read_ave_chunk (those with timestep >=
     first_step if given): (columns, total_counts).
 
     Each value column is the Ncount-weighted mean over the blocks, NaN in
@@ -142,60 +76,6 @@ def time_average_chunks(blocks, first_step=None):
             with np.errstate(invalid="ignore", divide="ignore"):
                 out[name] = np.where(total > 0, weighted / np.where(total > 0, total, 1.0), np.nan)
     return out, total
-
-
-def _skip_item(lines, k):
-    """index of the next 'ITEM:' line after line k"""
-    k += 1
-    while k < len(lines) and not lines[k].startswith("ITEM:"):
-        k += 1
-    return k
-
-
-def read_dump(path):
-    """All snapshots of a text dump custom (ITEM: ATOMS) or dump local
-    (ITEM: ENTRIES): list of (timestep, dict column -> array).
-
-    Each snapshot is "ITEM: TIMESTEP", the step, "ITEM: NUMBER OF ATOMS"
-    (or ENTRIES), the count, "ITEM: BOX BOUNDS ..." and its lines, then
-    "ITEM: ATOMS col1 col2 ..." and count rows; other ITEMs (TIME, UNITS)
-    are skipped; a snapshot may have no atom.  The rows of all snapshots
-    with the same columns are converted at once (fast on 1e5 snapshots).
-    Columns id, type, mol, proc are integers, others floats; a last
-    snapshot cut short by a running job is dropped."""
-    with open(path) as handle:
-        lines = handle.read().splitlines()
-    snaps = []                      # (step, header words, first row, count)
-    step, count, k, n = None, 0, 0, len(lines)
-    while k < n:
-        line = lines[k]
-        if line.startswith("ITEM: TIMESTEP"):
-            step = int(lines[k + 1].split()[0])
-            k += 2
-        elif line.startswith("ITEM: NUMBER OF"):
-            count = int(lines[k + 1])
-            k += 2
-        elif line.startswith("ITEM: ATOMS") or line.startswith("ITEM: ENTRIES"):
-            if k + 1 + count > n:
-                break
-            snaps.append((step, tuple(line.split()[2:]), k + 1, count))
-            k += 1 + count
-        else:
-            k = _skip_item(lines, k)
-    parsed = [None] * len(snaps)
-    for names in dict.fromkeys(s[1] for s in snaps):
-        members = [i for i, s in enumerate(snaps) if s[1] == names]
-        rows = [row for i in members for row in lines[snaps[i][2]:snaps[i][2] + snaps[i][3]]]
-        data = np.loadtxt(rows, ndmin=2, comments=None) if rows else np.zeros((0, len(names)))
-        if data.shape[1] != len(names):
-            raise ValueError(f"{path}: {data.shape[1]} values per row for columns {names}")
-        columns = [np.rint(data[:, c]).astype(np.int64) if name in INTEGER_COLUMNS else data[:, c]
-                   for c, name in enumerate(names)]
-        bounds = np.cumsum([0] + [snaps[i][3] for i in members])
-        for j, i in enumerate(members):
-            lo, hi = bounds[j], bounds[j + 1]
-            parsed[i] = (snaps[i][0], {name: col[lo:hi] for name, col in zip(names, columns)})
-    return parsed
 
 
 # ---------------------------------------------------------------------------
@@ -525,15 +405,16 @@ def portion_forces(y, force, y_bottom, y_top, n=10):
 
 
 def portion_force_series(snapshots, y_bottom, y_top, n=10, ycol="v_ycontact", fcol="v_fwall"):
-    """portion_forces of each snapshot of read_dump: (timesteps, (nsnap, n));
-    y_bottom and y_top are numbers or one per snapshot (a moving lid)."""
+    """portion_forces of each snapshot of lammps_output.read_dump:
+    (timesteps, (nsnap, n)); y_bottom and y_top are numbers or one per
+    snapshot (a moving lid)."""
     nsnap = len(snapshots)
-    counts = np.array([len(cols[ycol]) for _, cols in snapshots], dtype=np.int64)
-    steps = np.array([step for step, _ in snapshots], dtype=np.int64)
+    counts = np.array([len(s[ycol]) for s in snapshots], dtype=np.int64)
+    steps = np.array([s.timestep for s in snapshots], dtype=np.int64)
     if counts.sum() == 0:
         return steps, np.zeros((nsnap, n))
-    y = np.concatenate([cols[ycol] for _, cols in snapshots]).astype(float)
-    force = np.concatenate([cols[fcol] for _, cols in snapshots]).astype(float)
+    y = np.concatenate([s[ycol] for s in snapshots]).astype(float)
+    force = np.concatenate([s[fcol] for s in snapshots]).astype(float)
     ybot = np.repeat(np.broadcast_to(np.asarray(y_bottom, float), (nsnap,)), counts)
     ytop = np.repeat(np.broadcast_to(np.asarray(y_top, float), (nsnap,)), counts)
     index = np.clip(np.floor(n * (y - ybot) / (ytop - ybot)).astype(int), 0, n - 1)

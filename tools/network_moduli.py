@@ -26,9 +26,9 @@ def _contact_geometry(grains, contacts, width, height):
     grain-wall contacts"""
     index = {int(t): k for k, t in enumerate(grains["id"])}
     x, y, radius = grains["x"], grains["y"], grains["radius"]
-    ci = np.array([index[int(t)] for t in contacts["c0"]])
-    wall = contacts["c1"].astype(int) == 0
-    cj = np.array([index.get(int(t), -1) for t in contacts["c1"]])
+    ci = np.array([index[int(t)] for t in contacts[0]])
+    wall = contacts[1].astype(int) == 0
+    cj = np.array([index.get(int(t), -1) for t in contacts[1]])
     normal = np.zeros((len(ci), 2))
     arm_j = np.zeros(len(ci))
     grain = ~wall
@@ -48,9 +48,10 @@ def network_response(grains, contacts, width, height, wall_motion, eta=1.0):
     """the force (x, y) of the grains on the top wall per unit area after the
     top wall moved by wall_motion = (ux, uy), the bottom wall and the
     periodic box staying put; grains: dict with id, x, y, radius; contacts:
-    dict with c0 (i), c1 (j, 0 for a wall), c3 (k_n)"""
+    the columns of fix acoustic/mindlin's local array by position
+    (0: i, 1: j, 0 for a wall, 3: k_n; a lammps_output.Snapshot)"""
     ci, cj, wall, which_wall, normal, arm_i, arm_j = _contact_geometry(grains, contacts, width, height)
-    kn = np.asarray(contacts["c3"], dtype=float)
+    kn = np.asarray(contacts[3], dtype=float)
     tangent = np.column_stack((-normal[:, 1], normal[:, 0]))
     ngrains = len(grains["id"])
     ncontacts = len(ci)

@@ -13,28 +13,15 @@ import math
 
 import numpy as np
 
+from lammps_output import read_ave_time_vector
+
 
 # ---------------------------------------------------------------------------
 # files
 
-def read_vector_blocks(path):
-    """Blocks of a fix ave/time ... mode vector file: list of (step, rows),
-    rows a 2D array of the values after the row index."""
-    blocks = []
-    with open(path) as handle:
-        lines = [line.split() for line in handle if line.strip() and not line.startswith("#")]
-    k = 0
-    while k < len(lines):
-        step, nrows = int(lines[k][0]), int(lines[k][1])
-        rows = np.array([[float(v) for v in line[1:]] for line in lines[k + 1:k + 1 + nrows]])
-        blocks.append((step, rows))
-        k += 1 + nrows
-    return blocks
-
-
 def read_pulse(path):
     """(t, F_sig) of the last block written by compute vibration/pulse."""
-    rows = read_vector_blocks(path)[-1][1]
+    rows = read_ave_time_vector(path)[-1][1]
     return rows[:, 0], rows[:, 1]
 
 
@@ -50,24 +37,6 @@ def read_summary(path):
                 except ValueError:
                     values[words[0]] = words[1]
     return values
-
-
-def read_dump(path):
-    """the last snapshot of a dump custom or local file: dict column name ->
-    array, and the same columns by position (keys c0, c1, ...)"""
-    with open(path) as handle:
-        lines = handle.read().splitlines()
-    starts = [k for k, line in enumerate(lines) if line.startswith("ITEM: TIMESTEP")]
-    block = lines[starts[-1]:]
-    header = next(k for k, line in enumerate(block) if line.startswith("ITEM: ATOMS") or
-                  line.startswith("ITEM: ENTRIES"))
-    names = block[header].split()[2:]
-    data = np.array([[float(v) for v in line.split()] for line in block[header + 1:] if line.strip()])
-    if data.size == 0:
-        data = np.zeros((0, len(names)))
-    columns = {name: data[:, k] for k, name in enumerate(names)}
-    columns.update({f"c{k}": data[:, k] for k in range(len(names))})
-    return columns
 
 
 # ---------------------------------------------------------------------------
@@ -184,13 +153,13 @@ def static_properties(grains, contacts, width, height, pressure, boundary=3.0, d
     of rattlers f0, mean normal force <N>/p and the reduced moments
     Z(2) = <N^2>/<N>^2, Z(3) = <N^3>/<N>^3 -- measured in the bulk, between
     `boundary` and height - `boundary` (grain centres; contacts with at least
-    one such grain).  grains: dict with id, y, radius; contacts: dict with the
-    columns of fix acoustic/mindlin's local array (c0 = i, c1 = j (0: a wall),
-    c2 = f_n)."""
+    one such grain).  grains: dict or lammps_output.Snapshot with id, y,
+    radius; contacts: the columns of fix acoustic/mindlin's local array by
+    position (a Snapshot of its dump local: 0 = i, 1 = j (0: a wall), 2 = f_n)."""
     ids = grains["id"].astype(int)
     y = grains["y"]
     radius = grains["radius"]
-    ci, cj, fn = contacts["c0"].astype(int), contacts["c1"].astype(int), contacts["c2"]
+    ci, cj, fn = contacts[0].astype(int), contacts[1].astype(int), contacts[2]
     loaded = fn > 0.0
     ci, cj, fn = ci[loaded], cj[loaded], fn[loaded]
     bulk = (y > boundary) & (y < height - boundary)

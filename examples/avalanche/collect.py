@@ -26,6 +26,7 @@ from lammps_log import wall_time  # noqa: E402
 
 import avalanche as av  # noqa: E402
 import avalanche_figures as figs  # noqa: E402
+from lammps_output import read_dump  # noqa: E402
 
 # paper 000, §3.1-3.2 text: H = 3 d: 20 deg without, 14.5 deg with 70 kHz;
 # H = 14.4 d: 17 deg without (Fig. 6), flows at 16 deg with 70 kHz (Fig. 9);
@@ -273,7 +274,7 @@ def figures(all_ens, summary, top, figdir):
         p = packs[0]
         dump, cont = os.path.join(p["path"], "f70.dump"), os.path.join(p["path"], "f70.contacts")
         if os.path.exists(dump) and os.path.exists(cont):
-            frames = av.read_dump(dump)
+            frames = read_dump(dump)
             tm = p["f70"][0] if np.isfinite(p["f70"][0]) else 90.0
             below = [i for i, fr in enumerate(frames) if fr["v_th"][0] < tm - 1e-6]
             k = below[-1] if below else len(frames) - 1

@@ -23,6 +23,7 @@ import numpy as np  # noqa: E402
 from lammps_log import wall_time  # noqa: E402
 
 import cavity  # noqa: E402
+import lammps_output  # noqa: E402
 import cavity_figures as figs  # noqa: E402
 
 PAPER = {"r1": 0.53, "r2": 0.86, "I0": 0.02}
@@ -47,7 +48,7 @@ def analyse(run):
     if not os.path.exists(log) or "cavity result" not in open(log).read():
         return None
     p = read_params(os.path.join(run, "cavity.params"))
-    wall = cavity.read_ave_time(os.path.join(run, "cavity.wall.txt"))
+    wall = lammps_output.read_ave_time(os.path.join(run, "cavity.wall.txt"))
     F = wall["F"]
     portions = np.column_stack([wall[f"F_{i}"] for i in range(1, 11)])
     PLd = p["P"] * p["L"] * p["d"]
@@ -71,7 +72,7 @@ def analyse(run):
     # vortex centre from the velocity field after tskip
     flow = os.path.join(run, "cavity.flow")
     if os.path.exists(flow):
-        cols, counts = cavity.time_average_chunks(cavity.read_ave_chunk(flow), first_step=p["nskip"])
+        cols, counts = cavity.time_average_chunks(lammps_output.read_ave_chunk(flow), first_step=p["nskip"])
         inside = (counts > 0) & (cols["Coord1"] > 0) & (cols["Coord1"] < p["L"]) & (cols["Coord2"] > 0)
         vx = np.where(inside, cols["vx"], np.nan)
         vy = np.where(inside, cols["vy"], np.nan)
@@ -82,8 +83,8 @@ def analyse(run):
             r["ell_over_L"], centre = np.nan, None
         field = (cols["Coord1"], cols["Coord2"], vx, vy, p["L"], centre)
     # three scales of force: samples for the PDFs and Eq. 7 fits
-    snaps = cavity.read_dump(os.path.join(run, "cavity.contacts"))
-    f = np.concatenate([cols["v_fwall"] for _, cols in snaps if len(cols["v_fwall"])])
+    snaps = lammps_output.read_dump(os.path.join(run, "cavity.contacts"))
+    f = np.concatenate([s["v_fwall"] for s in snaps if len(s)])
     f = f[f > 0]
     r["contacts_per_record"] = float(len(f) / max(1, len(snaps)))
     samples = {"particle": f, "wall": F, "meso": portions[:, 2:9]}
@@ -100,7 +101,7 @@ def analyse(run):
             r[f"fit_{scale}"] = [np.nan] * 3
     us = os.path.join(run, "cavity.us.txt")
     if os.path.exists(us):
-        u = cavity.read_ave_time(us)
+        u = lammps_output.read_ave_time(us)
         r["mu_ratio"] = float(u["mu_ratio_mean"].mean())
         r["frac_below_half"] = float(u["frac_below_half"].mean())
     return r, {"F": F, "portions": portions, "f": f, "C": C, "C_portions": C_portions, "dt_rec": dt_rec,

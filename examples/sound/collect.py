@@ -13,6 +13,7 @@ import numpy as np
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "..", "tools"))
+import lammps_output  # noqa: E402
 import network_moduli  # noqa: E402
 import sound  # noqa: E402
 import sound_figures  # noqa: E402
@@ -55,8 +56,8 @@ def sample_results(path):
         t, f = sound.read_pulse(os.path.join(path, f"pulse_{condition}.dat"))
         peak = sound.coherent_peak(t, f)
         result.update({f"{key}_{condition}": value for key, value in peak.items()})
-    grains = sound.read_dump(os.path.join(path, "grains.dump"))
-    contacts = sound.read_dump(os.path.join(path, "contacts.dump"))
+    grains = lammps_output.read_dump(os.path.join(path, "grains.dump"))[-1]
+    contacts = lammps_output.read_dump(os.path.join(path, "contacts.dump"))[-1]
     result.update(sound.static_properties(grains, contacts, summary["W"], summary["h"], summary["p"],
                                           depth=summary.get("D") or None))
     if "p_peak" in summary:
@@ -312,7 +313,7 @@ def main():
         sound_figures.fig4_signals(signals, sound.ensemble(signals), os.path.join(figures, "fig4_signal_p1e-4.png"),
                                    "p = 1e-4, L ≈ 25, initial condition A")
         first = tall[0][0]
-        modes = sound.read_vector_blocks(os.path.join(found[first], "modes.dat"))[-1][1][:, 0]
+        modes = lammps_output.read_ave_time_vector(os.path.join(found[first], "modes.dat"))[-1][1][:, 0]
         sound_figures.fig9_spectrum(modes, os.path.join(figures, "fig9_spectrum_p1e-4.png"),
                                     "p = 1e-4, L ≈ 25 (rattlers: zero modes)")
     if at:

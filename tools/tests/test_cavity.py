@@ -10,6 +10,7 @@ from scipy import integrate, signal, special, stats
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import cavity  # noqa: E402
+import lammps_output  # noqa: E402
 
 
 # ---------------------------------------------------------------------------
@@ -225,44 +226,23 @@ def test_vortex_from_an_ave_chunk_file(tmp_path):
                   for k in range(len(X))]
     path = tmp_path / "cavity.flow"
     path.write_text("\n".join(lines) + "\n")
-    flow, total = cavity.time_average_chunks(cavity.read_ave_chunk(path))
+    flow, total = cavity.time_average_chunks(lammps_output.read_ave_chunk(path))
     assert np.all(np.isnan(flow["vx"][total == 0]))
     xc, yc, _ = cavity.vortex_centre(flow["Coord1"], flow["Coord2"], flow["vx"], flow["vy"], L)
     assert abs(xc - x0) < 0.015 and abs(yc - y0) < 0.015
 
 
 # ---------------------------------------------------------------------------
-# readers
+# the mean flow and the wall portions, through the readers of lammps_output
 
-def test_read_ave_time(tmp_path):
-    path = tmp_path / "f.txt"
-    path.write_text("# Time-averaged data for fix wallrec\n# TimeStep c_ftotal v_h\n"
-                    "100 1.5 0.03\n200 -2 3e-2\n300 4.25e+06 0.031\n")
-    data = cavity.read_ave_time(path)
-    assert list(data["TimeStep"]) == [100, 200, 300]
-    assert data["TimeStep"].dtype.kind == "i"
-    assert list(data["c_ftotal"]) == [1.5, -2.0, 4.25e6]
-    assert list(data["v_h"]) == [0.03, 0.03, 0.031]
-    # a user's title2 with words after the names (in.cavity's "(dt ... s)"),
-    # and a single record
-    path.write_text("# cavity run\n# time-step F F_1 F_2 (dt 1e-06 s)\n5 3 1 2\n")
-    data = cavity.read_ave_time(path)
-    assert set(data) == {"time-step", "F", "F_1", "F_2", "TimeStep"}
-    assert list(data["F_2"]) == [2.0] and list(data["TimeStep"]) == [5]
-
-
-def test_read_ave_chunk_and_average(tmp_path):
+def test_average_of_ave_chunk_blocks(tmp_path):
     path = tmp_path / "c.txt"
     path.write_text("# Chunk-averaged data for fix flow and group all\n"
                     "# Timestep Number-of-chunks Total-count\n"
                     "# Chunk Coord1 Coord2 Ncount vx vy\n"
                     "10 3 4\n  1 0.5 0.5 3 1 -1\n  2 0.5 1.5 1 2 0\n  3 1.5 0.5 0 0 0\n"
-                    "20 3 4\n  1 0.5 0.5 1 5 1\n  2 0.5 1.5 3 6 0\n  3 1.5 0.5 0 0 0\n"
-                    "30 3 2\n  1 0.5 0.5")                    # a block cut short
-    blocks = cavity.read_ave_chunk(path)
-    assert [step for step, _ in blocks] == [10, 20]
-    assert list(blocks[1][1]["Chunk"]) == [1, 2, 3]
-    assert list(blocks[0][1]["Coord2"]) == [0.5, 1.5, 0.5]
+                    "20 3 4\n  1 0.5 0.5 1 5 1\n  2 0.5 1.5 3 6 0\n  3 1.5 0.5 0 0 0\n")
+    blocks = lammps_output.read_ave_chunk(path)
     mean, total = cavity.time_average_chunks(blocks)
     assert list(total) == [4.0, 4.0, 0.0]
     assert mean["vx"][:2] == pytest.approx([(3 * 1 + 1 * 5) / 4, (1 * 2 + 3 * 6) / 4])
@@ -273,25 +253,17 @@ def test_read_ave_chunk_and_average(tmp_path):
     assert list(later["vx"][:2]) == [5.0, 6.0]
 
 
-def test_read_dump_many_snapshots(tmp_path):
+def test_portion_forces_of_dumped_contacts(tmp_path):
     box = "ITEM: BOX BOUNDS pp ff pp\n-1e-03 5.1e-02\n-1e-03 4.4e-02\n-1e-03 1e-03\n"
-    tri = "ITEM: BOX BOUNDS xy xz yz pp ff pp\n-1e-03 5.1e-02 0\n-1e-03 4.4e-02 0\n-1e-03 1e-03 0\n"
     text = ("ITEM: TIMESTEP\n100\nITEM: NUMBER OF ATOMS\n2\n" + box +
             "ITEM: ATOMS id v_ycontact v_fwall\n7 0.0125 1.5e-3\n12 0.02 2\n"
             "ITEM: TIMESTEP\n200\nITEM: NUMBER OF ATOMS\n0\n" + box +
             "ITEM: ATOMS id v_ycontact v_fwall\n"
-            "ITEM: TIMESTEP\n300\nITEM: NUMBER OF ATOMS\n1\n" + tri +
-            "ITEM: ATOMS id v_ycontact v_fwall\n3 0.001 4\n"
-            "ITEM: TIMESTEP\n400\nITEM: NUMBER OF ATOMS\n3\n" + box +
-            "ITEM: ATOMS id v_ycontact v_fwall\n1 0.1 1\n")     # cut short: dropped
+            "ITEM: TIMESTEP\n300\nITEM: NUMBER OF ATOMS\n1\n" + box +
+            "ITEM: ATOMS id v_ycontact v_fwall\n3 0.001 4\n")
     path = tmp_path / "cavity.contacts"
     path.write_text(text)
-    snaps = cavity.read_dump(path)
-    assert [step for step, _ in snaps] == [100, 200, 300]
-    assert list(snaps[0][1]["id"]) == [7, 12] and snaps[0][1]["id"].dtype.kind == "i"
-    assert list(snaps[0][1]["v_fwall"]) == [1.5e-3, 2.0]
-    assert len(snaps[1][1]["v_ycontact"]) == 0 and set(snaps[1][1]) == {"id", "v_ycontact", "v_fwall"}
-    assert list(snaps[2][1]["v_ycontact"]) == [0.001]
+    snaps = lammps_output.read_dump(path)
     # portions of the wall between y = 0.005 and 0.025: 0.0125 is in the 4th
     # of ten, 0.02 in the 8th, 0.001 below the bottom counts in the 1st
     steps, forces = cavity.portion_force_series(snaps, 0.005, 0.025)

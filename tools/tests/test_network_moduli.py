@@ -11,13 +11,13 @@ import network_moduli
 
 def packing(ids, x, y, bonds, wall_contacts, k, k_wall):
     """grains of radius 1/2 and the contact table of fix acoustic/mindlin's
-    local array (c0 = i, c1 = j or 0 for a wall, c3 = k_n)"""
+    local array by position (0: i, 1: j or 0 for a wall, 3: k_n)"""
     grains = {"id": np.array(ids, float), "x": np.array(x, float), "y": np.array(y, float),
               "radius": np.full(len(ids), 0.5)}
     ci = [i for i, _ in bonds] + list(wall_contacts)
     cj = [j for _, j in bonds] + [0] * len(wall_contacts)
     kn = [k] * len(bonds) + [k_wall] * len(wall_contacts)
-    contacts = {"c0": np.array(ci, float), "c1": np.array(cj, float), "c3": np.array(kn, float)}
+    contacts = {0: np.array(ci, float), 1: np.array(cj, float), 3: np.array(kn, float)}
     return grains, contacts
 
 

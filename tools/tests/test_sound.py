@@ -57,12 +57,10 @@ def test_ensemble_mean_and_rms():
     assert np.allclose(rms, 1.0)
 
 
-def test_read_vector_blocks_takes_the_last(tmp_path):
+def test_read_pulse_takes_the_last_block(tmp_path):
     path = tmp_path / "pulse.dat"
     path.write_text("# Time-averaged data\n# TimeStep Number-of-rows\n# Row c_p[1] c_p[2]\n"
                     "0 2\n1 0 5\n2 1 6\n100 3\n1 0 0\n2 0.5 1.5\n3 1 2.5\n")
-    blocks = sound.read_vector_blocks(path)
-    assert [step for step, _ in blocks] == [0, 100]
     t, f = sound.read_pulse(path)
     assert list(t) == [0.0, 0.5, 1.0]
     assert list(f) == [0.0, 1.5, 2.5]
@@ -84,7 +82,7 @@ def test_static_properties_of_a_small_packing():
     # 1, 2, 3 in a triangle of contacts, 4 a rattler; forces 1, 2, 3
     grains = {"id": np.array([1, 2, 3, 4]), "y": np.array([4.0, 4.0, 4.9, 6.0]),
               "radius": np.full(4, 0.5)}
-    contacts = {"c0": np.array([1, 2, 3]), "c1": np.array([2, 3, 1]), "c2": np.array([1.0, 2.0, 3.0])}
+    contacts = {0: np.array([1, 2, 3]), 1: np.array([2, 3, 1]), 2: np.array([1.0, 2.0, 3.0])}   # by position
     out = sound.static_properties(grains, contacts, width=4.0, height=10.0, pressure=0.5, boundary=3.0)
     area = 4.0 * 4.0
     assert out["phi2"] == pytest.approx(4 * math.pi * 0.25 / area)
@@ -118,15 +116,6 @@ def test_speeds():
     # paper 003 Eq. 18 at p = 1e-4, and Eq. 19 with eta = 1
     assert sound.triangular_lattice_speed(1e-4) == pytest.approx(0.24471, rel=1e-4)
     assert sound.triangular_lattice_speed(1e-4, eta=1.0) == pytest.approx(0.24471 * math.sqrt(4 / 3), rel=1e-4)
-
-
-def test_read_dump_local_and_custom(tmp_path):
-    local = tmp_path / "c.dump"
-    local.write_text("ITEM: TIMESTEP\n5\nITEM: NUMBER OF ENTRIES\n2\nITEM: BOX BOUNDS pp ff pp\n"
-                     "0 1\n0 1\n0 1\nITEM: ENTRIES c_a[1] c_a[2]\n1 2\n3 4\n")
-    d = sound.read_dump(local)
-    assert list(d["c_a[1]"]) == [1.0, 3.0]
-    assert list(d["c1"]) == [2.0, 4.0]
 
 
 def test_figures_are_written(tmp_path):

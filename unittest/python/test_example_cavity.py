@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import cavity
+import lammps_output
 
 LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "cavity")
@@ -52,14 +53,14 @@ def test_control_parameters_are_paper_004s(small_run):
     assert "cavity result c:" in log
     # the deposit fills the cavity to about H; a dense 2D packing
     assert p["Hpacked"] / H == pytest.approx(1.0, abs=0.2)
-    wall = cavity.read_ave_time(str(path / "c.wall.txt"))
+    wall = lammps_output.read_ave_time(str(path / "c.wall.txt"))
     assert np.all((wall["phi2d"] > 0.6) & (wall["phi2d"] < 0.9))
 
 
 def test_three_scales_of_wall_force_agree(small_run):
     path, _ = small_run
     p = read_params(path / "c.params")
-    wall = cavity.read_ave_time(str(path / "c.wall.txt"))
+    wall = lammps_output.read_ave_time(str(path / "c.wall.txt"))
     F = wall["F"]
     portions = np.column_stack([wall[f"F_{i}"] for i in range(1, 11)])
     scale = np.abs(F).max()
@@ -67,17 +68,17 @@ def test_three_scales_of_wall_force_agree(small_run):
     # wall scale = sum of the meso scale (compute reduce vs reduce/chunk)
     assert np.allclose(portions.sum(axis=1), F, rtol=0, atol=1e-5 * scale)
     # particle scale (dump of the contacts) against both
-    snaps = cavity.read_dump(str(path / "c.contacts"))
-    steps = np.array([s for s, _ in snaps])
+    snaps = lammps_output.read_dump(str(path / "c.contacts"))
+    steps = np.array([s.timestep for s in snaps])
     assert np.array_equal(steps, wall["TimeStep"].astype(int))
-    per_snapshot = np.array([cols["v_fwall"].sum() if len(cols["v_fwall"]) else 0.0 for _, cols in snaps])
+    per_snapshot = np.array([s["v_fwall"].sum() for s in snaps])
     assert np.allclose(per_snapshot, F, rtol=0, atol=1e-5 * scale)
     # the tool's portions from the contact heights are the deck's
     ybot = 0.5 * p["d"]
     _, tool_portions = cavity.portion_force_series(snaps, ybot, ybot + wall["h"])
     assert np.allclose(tool_portions, portions, rtol=0, atol=1e-4 * scale)
     # a frictionless wall pushes: every contact force on the wall is a push
-    assert all(np.all(cols["v_fwall"] >= 0.0) for _, cols in snaps)
+    assert all(np.all(s["v_fwall"] >= 0.0) for s in snaps)
     # records: every nevery steps from nskip on
     assert np.all(np.diff(steps) == int(p["nevery"])) and steps[0] >= p["nskip"]
 
@@ -85,14 +86,14 @@ def test_three_scales_of_wall_force_agree(small_run):
 def test_mean_force_and_vortex(small_run):
     path, _ = small_run
     p = read_params(path / "c.params")
-    wall = cavity.read_ave_time(str(path / "c.wall.txt"))
+    wall = lammps_output.read_ave_time(str(path / "c.wall.txt"))
     fnorm = wall["F"].mean() / (p["P"] * p["L"] * p["d"])
     # the deck's own running mean (fix ave/time ave running) is the mean of the records
     logged = float(re.search(r"F/\(PLd\) = ([0-9.eE+-]+)", small_run[1]).group(1))
     assert logged == pytest.approx(fnorm, rel=1e-3)
     # paper 004 Fig. 3b: between 0.5 and 0.9 (a small cavity: a wide margin)
     assert 0.3 < fnorm < 1.3
-    blocks = cavity.read_ave_chunk(str(path / "c.flow"))
+    blocks = lammps_output.read_ave_chunk(str(path / "c.flow"))
     cols, counts = cavity.time_average_chunks(blocks, first_step=p["nskip"])
     x, y, vx = cols["Coord1"], cols["Coord2"], cols["vx"]
     inside = (counts > 0) & (x > 0) & (x < p["L"])
@@ -110,11 +111,11 @@ def test_mean_force_and_vortex(small_run):
 def test_ultrasound_from_the_bottom(tmp_path):
     log = run_deck(tmp_path, dict(SMALL, strain=2, freq=70e3, tag="u"))
     assert "not in the vibration network" in log      # region side walls: free surfaces, said once
-    us = cavity.read_ave_time(str(tmp_path / "u.us.txt"))
+    us = lammps_output.read_ave_time(str(tmp_path / "u.us.txt"))
     ratio = us["mu_ratio_mean"]
     assert len(ratio) > 3 and np.all(np.isfinite(ratio))
     assert np.all((ratio > 0.0) & (ratio <= 1.0)) and ratio.min() < 1.0
-    wall = cavity.read_ave_time(str(tmp_path / "u.wall.txt"))
+    wall = lammps_output.read_ave_time(str(tmp_path / "u.wall.txt"))
     assert np.all(np.isfinite(wall["F"]))
 
 
