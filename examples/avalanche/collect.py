@@ -125,7 +125,7 @@ def kappa_study(top):
     below theta_m) of the 70 kHz ramps in OUT/kappa/k<kappa>/H<H>/s<seed>,
     each beside the same packing's ramps at the default kappa_scale 0.3 in
     ensemble_periodic."""
-    rows = []
+    rows = {}                 # (kappa, H, seed) -> row: the reference ramps appear once
     for d in sorted(glob.glob(os.path.join(top, "kappa", "k*", "H*", "s*"))):
         kdir, hdir = os.path.dirname(os.path.dirname(d)), os.path.dirname(d)
         kappa, H = float(os.path.basename(kdir)[1:]), float(os.path.basename(hdir)[1:])
@@ -135,10 +135,9 @@ def kappa_study(top):
             log = os.path.join(path, "log.f70")
             if os.path.exists(log) and np.isfinite(result(log)[0]):
                 t70 = result(log)[0]
-                row = (k, H, os.path.basename(d)[1:], t0, t70, t0 - t70, last_mu_factor(log))
-                if row not in rows:
-                    rows.append(row)
-    return sorted(rows)
+                seed = os.path.basename(d)[1:]
+                rows[(k, H, seed)] = (k, H, seed, t0, t70, t0 - t70, last_mu_factor(log))
+    return [rows[key] for key in sorted(rows)]
 
 
 def mean_sd(values):

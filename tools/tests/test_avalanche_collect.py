@@ -87,3 +87,15 @@ def test_kappa_rows_beside_the_default(collect, out):
         [(0.1, "1", 17.5, 1.0), (0.3, "1", 14.5, 4.0)]
     mu = {k: m for k, *_, m in rows}
     assert mu == {0.1: 0.9, 0.3: 0.6}, "mean mu*/mu of the last angle before theta_m"
+
+
+def test_kappa_reference_row_once_even_without_mu(collect, out):
+    # H = 3 d packing 2: its 70 kHz ramp flows at the first angle, so no angle
+    # before theta_m gives a mean mu*/mu (nan); two kappa values share it
+    for kappa, theta in ((0.1, 18.0), (0.2, 17.0)):
+        k = packing(out, f"kappa/k{kappa}", 3, 2, 3.0, ([(20, "stable")], 20.5, 0.5),
+                    ([(theta - 0.5, "stable"), (theta, "uniform")], theta, 0.3))
+        os.remove(k / "log.f0")
+    rows = [r for r in collect.kappa_study(str(out)) if r[1] == 3.0]
+    assert [(k, shift) for k, H, seed, t0, t70, shift, mu in rows] == [(0.1, 2.5), (0.2, 3.5), (0.3, 4.5)]
+    assert np.isnan(rows[-1][-1])
