@@ -12,7 +12,8 @@
 #             4871 1 2 3, 0 and 70 kHz                                  (default)
 #   tcon      t_con above theta_m for H/d = 6 (and at 19 deg) and 14.4, and for
 #             the free-ends H/d = 6 layers at 0 Hz (after the set free)
-#   free      H/d = 3, 6 and 14.4 with free ends, 400 d, packings 1 2 3 4
+#   free      H/d = 3, 6, 14.4, 8.7 and 11.4 with free ends, 400 d, packings
+#             1 2 3 4, 0 Hz first, then 70 kHz
 #   more      H/d = 8.7 and 11.4 (L = 40 d), periodic, packings 4871 1 2 3
 #   kappa     the 70 kHz shift against kappa_scale: H/d = 6 (L = 80 d), packings
 #             1 and 2 of the periodic set, kappa_scale 0.1, 0.2 and 1 (0.3 is
@@ -45,13 +46,14 @@ for set in "${sets[@]}"; do
         AVALANCHE_FREE=0 AVALANCHE_LAYER=40 "$E" "$build" 14.4 "$s" tcon0 14.4 "$s" tcon70e3
       done ;;
     free)
-      # 0 Hz ramps of every H/d first (cheap), then the 70 kHz ones; a 70 kHz
-      # ramp creeps at every angle (1.3 s each) and runs as pieces of about
-      # 20 min; at H = 14.4 d it is several hours
-      for H in 3 6 14.4; do
+      # 0 Hz ramps of every H/d first (cheap), then the 70 kHz ones, H/d = 3,
+      # 6 and 14.4 before 8.7 and 11.4; a 70 kHz ramp creeps at every angle
+      # (1.3 s each) and runs as pieces of about 20 min; at H = 14.4 d it is
+      # several hours
+      for H in 3 6 14.4 8.7 11.4; do
         for s in 1 2 3 4; do "$E" "$build" "$H" "$s" 0; done
       done
-      for H in 3 6 14.4; do
+      for H in 3 6 14.4 8.7 11.4; do
         for s in 1 2 3 4; do "$E" "$build" "$H" "$s" 70e3; done
       done ;;
     more)
