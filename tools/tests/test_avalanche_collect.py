@@ -99,3 +99,17 @@ def test_kappa_reference_row_once_even_without_mu(collect, out):
     rows = [r for r in collect.kappa_study(str(out)) if r[1] == 3.0]
     assert [(k, shift) for k, H, seed, t0, t70, shift, mu in rows] == [(0.1, 2.5), (0.2, 3.5), (0.3, 4.5)]
     assert np.isnan(rows[-1][-1])
+
+
+def test_slope_from_6_d_up(collect, out):
+    # add H = 9 d: two packings at 16 and 17 deg; from 6 d up the points are
+    # (6, 18.5), (6, 17.5), (9, 16), (9, 17): slope (16.5 - 18) / 3 = -0.5
+    for seed, theta in ((1, 16.0), (2, 17.0)):
+        packing(out, "ensemble_periodic", 9, seed, 9.0, ([(theta, "uniform")], theta, 0.5),
+                ([(theta - 3, "uniform")], theta - 3, 0.2))
+    by_h = collect.ensembles(str(out))["periodic"]
+    assert collect.theta_slope(by_h, "f0", 6.0)[0] == pytest.approx(-0.5)
+    # 70 kHz: 14.5 and 14.5 at 6 d, 13 and 14 at 9 d
+    assert collect.theta_slope(by_h, "f70", 6.0)[0] == pytest.approx((13.5 - 14.5) / 3)
+    # all packings: the same as summarise's
+    assert collect.theta_slope(by_h, "f0") == collect.summarise(by_h)[1]
