@@ -112,14 +112,15 @@ while [ $# -gt 0 ]; do
     t0=$SECONDS
     if [ -f "log.$tag" ] && [ -f "$tag.resume" ]; then
       # go on after the last whole angle; drop what a killed piece wrote after it
-      read -r theta tres step last < "$tag.resume"
+      read -r theta tres step last next < "$tag.resume"
       awk -v t="$tres" '/^#/ || $1 + 0 < t - 5e-5' "$tag.series" > "$tag.series.cut" && mv "$tag.series.cut" "$tag.series"
       for dump in "$tag.dump" "$tag.contacts"; do
         [ -f "$dump" ] || continue
         awk -v s="$step" '/^ITEM: TIMESTEP/ {getline t; keep = (t + 0 < s); if (keep) print $0 "\n" t; next} keep' \
           "$dump" > "$dump.cut" && mv "$dump.cut" "$dump"
       done
-      theta0=$(awk -v a="$theta" 'BEGIN{printf "%.2f", a + 0.5}')
+      # the next angle as the deck wrote it (a resume file of an older deck: theta + 0.5)
+      theta0=${next:-$(awk -v a="$theta" 'BEGIN{printf "%.2f", a + 0.5}')}
       lmprun -in "$here/in.avalanche" "${common[@]}" -var restart "$last" -var pre 0 -var theta0 "$theta0" \
         -var append 1 -log "log.$tag.resume"
     else

@@ -73,7 +73,8 @@ def pieced(tmp_path_factory, whole):
     assert "paused after 1 piece" in said
     first = angle_lines(path / "log.f0")
     # a killed piece: output written past the last whole angle
-    theta, tres, step, last = open(path / "f0.resume").read().split()
+    theta, tres, step, last, following = open(path / "f0.resume").read().split()
+    assert float(following) == float(theta) + 0.5, "the next angle, one dtheta on"
     with open(path / "f0.series", "a") as f:
         f.write(f"{float(tres) + 0.0005:.4f} 99 0 0 0 0 0 0 0 0\n")
     with open(path / "f0.dump", "a") as f:
