@@ -2,8 +2,9 @@
 """Analysis of inclined-plane avalanche runs (paper 000, examples/avalanche).
 
 Reads LAMMPS dump files (dump custom of the grains, dump local of the contacts
-written by fix acoustic/mindlin; tools/lammps_output.py) and the per-millisecond series file written by
-examples/avalanche/in.avalanche, and computes
+written by fix acoustic/mindlin; read with tools/lammps_output.py) and the
+per-millisecond series file written by examples/avalanche/in.avalanche, and
+computes
 
   sigma_l     Eq. 3.1 of paper 000: normalised standard deviation of the
               downslope velocity in the top (l = 1) and bottom (l = 2) halves of

@@ -111,5 +111,3 @@ def test_slope_from_6_d_up(collect, out):
     assert collect.theta_slope(by_h, "f0", 6.0)[0] == pytest.approx(-0.5)
     # 70 kHz: 14.5 and 14.5 at 6 d, 13 and 14 at 9 d
     assert collect.theta_slope(by_h, "f70", 6.0)[0] == pytest.approx((13.5 - 14.5) / 3)
-    # all packings: the same as summarise's
-    assert collect.theta_slope(by_h, "f0") == collect.summarise(by_h)[1]
