@@ -11,7 +11,8 @@
 #   periodic  H/d = 3, 6 (L = 80 d) and 14.4 (L = 40 d), periodic, packings
 #             4871 1 2 3, 0 and 70 kHz                                  (default)
 #   tcon      t_con above theta_m for H/d = 6 (and at 19 deg) and 14.4, and for
-#             the free-ends H/d = 6 layers at 0 Hz (after the set free)
+#             the free-ends H/d = 6 layers at 0 and 70 kHz (after their ramps
+#             of the set free)
 #   free      H/d = 3, 6, 14.4, 8.7 and 11.4 with free ends, 400 d, packings
 #             1 2 3 4, 0 Hz first, then 70 kHz
 #   more      H/d = 8.7 and 11.4 (L = 40 d), periodic, packings 4871 1 2 3
@@ -38,9 +39,10 @@ for set in "${sets[@]}"; do
       for s in "${seeds[@]}"; do
         AVALANCHE_TCON_ANGLES=19 AVALANCHE_FREE=0 AVALANCHE_LAYER=80 "$E" "$build" 6 "$s" tcon0 6 "$s" tcon70e3
       done
-      # free ends, H = 6 d, 0 Hz: theta_m + 1 deg and 19 deg (paper 000's angle)
+      # free ends, H = 6 d, 0 and 70 kHz: theta_m + 1 deg and 19 deg (paper
+      # 000's angle)
       for s in 1 2 3 4; do
-        AVALANCHE_TCON_STEPS=1 AVALANCHE_TCON_ANGLES=19 "$E" "$build" 6 "$s" tcon0
+        AVALANCHE_TCON_STEPS=1 AVALANCHE_TCON_ANGLES=19 "$E" "$build" 6 "$s" tcon0 6 "$s" tcon70e3
       done
       for s in "${seeds[@]}"; do
         AVALANCHE_FREE=0 AVALANCHE_LAYER=40 "$E" "$build" 14.4 "$s" tcon0 14.4 "$s" tcon70e3
