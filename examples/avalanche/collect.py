@@ -9,7 +9,8 @@ log.f70 and the t_con runs log.tcon_f*_<theta>.  Prints markdown tables:
 packings, theta_m(H/d) per geometry with means and standard deviations, the
 fitted slope of theta_m(H/d) with its standard error, the 70 kHz shift (paired
 by packing), t_con; writes OUT_DIR/summary.json and the figures fig7_thetam,
-fig8_tcon, fig10_chains_H6, fig3_modes_H6, fig6_9_sigma_H14.4 and, with the
+fig8_tcon and, where the dumps and series are there (not in the record of
+record.py), fig10_chains_H6, fig3_modes_H6, fig6_9_sigma_H14.4; with the
 runs of `run_production.sh build kappa` (OUT_DIR/kappa/k<kappa>/), the table
 and figure kappa_shift of the 70 kHz shift against kappa_scale (PNG).
 """
@@ -288,7 +289,8 @@ def figures(all_ens, summary, top, figdir):
                        "--dpi", "80"])
             figs.main(["modes", dump, cont, "--frame", "0", "-o", os.path.join(figdir, f"fig3_modes_H{H:g}.png"),
                        "--dpi", "80"])
-        sers = [(os.path.join(p["path"], f"{tag}.series"), p[tag][0]) for tag in ("f0", "f70") if np.isfinite(p[tag][0])]
+        sers = [(os.path.join(p["path"], f"{tag}.series"), p[tag][0]) for tag in ("f0", "f70")
+                if np.isfinite(p[tag][0]) and os.path.exists(os.path.join(p["path"], f"{tag}.series"))]
         if sers:
             args = ["sigma"] + [s for s, _ in sers]
             for _, th in sers:

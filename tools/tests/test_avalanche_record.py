@@ -1,0 +1,102 @@
+"""examples/avalanche/record.py on synthetic run directories: it keeps only
+the lines collect.py reads, leaves unfinished ramps out, keeps jobs recorded
+earlier, and collect.py reads the same per-packing numbers from the record as
+from the full outputs."""
+import importlib.util
+import os
+
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+AVALANCHE = os.path.join(HERE, "..", "..", "examples", "avalanche")
+
+
+def load(name):
+    spec = importlib.util.spec_from_file_location(f"avalanche_{name}", os.path.join(AVALANCHE, f"{name}.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.fixture(scope="module")
+def record():
+    return load("record")
+
+
+@pytest.fixture(scope="module")
+def collect():
+    return load("collect")
+
+
+DEPOSIT = "deposit: 500 grains on 80 base grains, box 80.0 d long, layer H = 6.10 d (target 6), free ends 1\n"
+RAMP = [
+    "LAMMPS (4 Feb 2025)\n",
+    "  Step Time v_theta\n",
+    "  1000 0.005 18\n",
+    "avalanche f0: 500 grains, 80 base grains, freq 0 Hz, U0/d 1e-4\n",
+    "avalanche f0: pre-ramp to 17.50 deg done at t = 0.300 s, E_k/E_t = 1.00e-09 (at rest)\n",
+    "angle 18.00 deg: stable after 0.100 s  max E_k/E_t 1e-09  max mobile fraction 0.000  "
+    "sigma1 1 sigma2 1  mean mu*/mu 1.000\n",
+    "Loop time of 12.5 on 2 procs for 1000 steps with 580 atoms\n",
+    "Total wall time: 0:01:05\n",
+    "angle 18.50 deg: uniform after 0.300 s  max E_k/E_t 1e-01  max mobile fraction 0.900  "
+    "sigma1 0.1 sigma2 0.5  mean mu*/mu 1.000\n",
+    "avalanche f0: freq 0 Hz  theta_m = 18.50 deg  t_con = 0.250 s\n",
+    "Total wall time: 0:00:55\n",
+]
+
+
+def packing(top, seed, f70_finished):
+    d = top / "ensemble" / "H6" / f"s{seed}"
+    os.makedirs(d)
+    (d / "log.deposit").write_text("LAMMPS (4 Feb 2025)\n" + DEPOSIT + "Total wall time: 0:00:30\n")
+    (d / "log.f0").write_text("".join(RAMP))
+    f70 = RAMP[:6] if not f70_finished else RAMP
+    (d / "log.f70").write_text("".join(f70).replace("f0", "f70"))
+    (d / "f0.dump").write_text("ITEM: TIMESTEP\n0\n")
+    return d
+
+
+def test_only_result_lines_of_finished_jobs(record, tmp_path):
+    out, rec = tmp_path / "out", tmp_path / "rec"
+    packing(out, 1, f70_finished=False)
+    (out / "ensemble" / "jobs.txt").write_text("H6 s1 f0: theta_m = 18.50 deg  wall 120 s\n")
+    assert record.record(str(out), str(rec)) == 2
+    d = rec / "ensemble" / "H6" / "s1"
+    assert sorted(os.listdir(d)) == ["log.deposit", "log.f0"], "no dump, no unfinished ramp"
+    dropped = ("LAMMPS", "  ", "Loop time")
+    assert (d / "log.f0").read_text() == "".join(line for line in RAMP if not line.startswith(dropped))
+    assert (d / "log.deposit").read_text() == DEPOSIT + "Total wall time: 0:00:30\n"
+    assert (rec / "ensemble" / "jobs.txt").read_text() == (out / "ensemble" / "jobs.txt").read_text()
+
+
+def test_record_grows_across_machines(record, tmp_path):
+    first, second, rec = tmp_path / "first", tmp_path / "second", tmp_path / "rec"
+    packing(first, 1, f70_finished=True)
+    (first / "ensemble" / "jobs.txt").write_text("job s1 f0\njob s1 f70\n")
+    record.record(str(first), str(rec))
+    packing(second, 2, f70_finished=True)
+    (second / "ensemble" / "jobs.txt").write_text("job s1 f70\njob s2 f0\n")
+    record.record(str(second), str(rec))
+    assert sorted(os.listdir(rec / "ensemble" / "H6")) == ["s1", "s2"], "the first machine's packing is kept"
+    assert (rec / "ensemble" / "jobs.txt").read_text() == "job s1 f0\njob s1 f70\njob s2 f0\n", \
+        "a job line already recorded is not written twice"
+
+
+def test_collect_reads_the_record_as_the_outputs(record, collect, tmp_path):
+    out, rec = tmp_path / "out", tmp_path / "rec"
+    packing(out, 1, f70_finished=True)
+    packing(out, 2, f70_finished=True)
+    record.record(str(out), str(rec))
+    full = collect.ensembles(str(out))["free ends, 400 d"][6.0]
+    kept = collect.ensembles(str(rec))["free ends, 400 d"][6.0]
+    keys = ("seed", "grains", "base", "H_measured", "length", "f0", "f70", "f0_wall", "f70_wall",
+            "f0_rest", "f0_onset", "f70_onset")
+    assert [{k: p[k] for k in keys} for p in kept] == [{k: p[k] for k in keys} for p in full]
+    assert kept[0]["f0"] == (18.5, 0.25) and kept[0]["f0_wall"] == 120 and kept[0]["f70_onset"] == 18.5
+    assert kept[0]["f0_rest"] == "at rest"
+
+
+def test_no_outputs_is_an_error(record, tmp_path):
+    with pytest.raises(SystemExit, match="no production outputs"):
+        record.main(str(tmp_path / "missing"), str(tmp_path / "rec"))
