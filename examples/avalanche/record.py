@@ -37,8 +37,12 @@ def finished(lines, name):
 
 def record_jobs(src, dst):
     """Append the job lines of src/jobs.txt that dst/jobs.txt lacks."""
-    old = open(dst).read().splitlines(keepends=True) if os.path.exists(dst) else []
-    new = [line for line in open(src) if line not in old]
+    old = []
+    if os.path.exists(dst):
+        with open(dst) as f:
+            old = f.readlines()
+    with open(src) as f:
+        new = [line for line in f if line not in old]
     if new:
         with open(dst, "a") as f:
             f.writelines(new)
@@ -53,6 +57,8 @@ def record(out, dest):
         for top in sorted(glob.glob(os.path.join(out, pattern))):
             rel = os.path.relpath(top, out)
             for log in sorted(glob.glob(os.path.join(top, "H*", "s*", "log.*"))):
+                if log.endswith(".resume"):     # the first lines of a piece; the piece appends to log.TAG
+                    continue
                 lines = result_lines(log)
                 if not finished(lines, os.path.basename(log)):
                     continue

@@ -54,6 +54,7 @@ def packing(top, seed, f70_finished):
     f70 = RAMP[:6] if not f70_finished else RAMP
     (d / "log.f70").write_text("".join(f70).replace("f0", "f70"))
     (d / "f0.dump").write_text("ITEM: TIMESTEP\n0\n")
+    (d / "log.f0.resume").write_text("LAMMPS (4 Feb 2025)\n" + RAMP[-2])
     return d
 
 
@@ -63,7 +64,7 @@ def test_only_result_lines_of_finished_jobs(record, tmp_path):
     (out / "ensemble" / "jobs.txt").write_text("H6 s1 f0: theta_m = 18.50 deg  wall 120 s\n")
     assert record.record(str(out), str(rec)) == 2
     d = rec / "ensemble" / "H6" / "s1"
-    assert sorted(os.listdir(d)) == ["log.deposit", "log.f0"], "no dump, no unfinished ramp"
+    assert sorted(os.listdir(d)) == ["log.deposit", "log.f0"], "no dump, no piece's own log, no unfinished ramp"
     dropped = ("LAMMPS", "  ", "Loop time")
     assert (d / "log.f0").read_text() == "".join(line for line in RAMP if not line.startswith(dropped))
     assert (d / "log.deposit").read_text() == DEPOSIT + "Total wall time: 0:00:30\n"
