@@ -3,22 +3,10 @@ numbers it reads from the logs (theta_m, t_con, first spreading flow, mean
 mu*/mu before theta_m) and the ensemble statistics built on them (mean,
 standard deviation, paired shift, slope of theta_m(H/d)) against values
 worked out by hand."""
-import importlib.util
 import os
 
 import numpy as np
 import pytest
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-COLLECT = os.path.join(HERE, "..", "..", "examples", "avalanche", "collect.py")
-
-
-@pytest.fixture(scope="module")
-def collect():
-    spec = importlib.util.spec_from_file_location("avalanche_collect", COLLECT)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 def angle(theta, state, mu=1.0):

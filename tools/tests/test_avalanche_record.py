@@ -2,30 +2,9 @@
 the lines collect.py reads, leaves unfinished ramps out, keeps jobs recorded
 earlier, and collect.py reads the same per-packing numbers from the record as
 from the full outputs."""
-import importlib.util
 import os
 
 import pytest
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-AVALANCHE = os.path.join(HERE, "..", "..", "examples", "avalanche")
-
-
-def load(name):
-    spec = importlib.util.spec_from_file_location(f"avalanche_{name}", os.path.join(AVALANCHE, f"{name}.py"))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-@pytest.fixture(scope="module")
-def record():
-    return load("record")
-
-
-@pytest.fixture(scope="module")
-def collect():
-    return load("collect")
 
 
 DEPOSIT = "deposit: 500 grains on 80 base grains, box 80.0 d long, layer H = 6.10 d (target 6), free ends 1\n"
