@@ -193,6 +193,16 @@ def fmt(ms, digits=2):
     return f"{m:.{digits}f} ± {s:.{digits}f}" if np.isfinite(s) else f"{m:.{digits}f}"
 
 
+def num(x, spec="g"):
+    """x formatted by spec, or a dash when it was not measured (nan)."""
+    return format(x, spec) if np.isfinite(x) else "—"
+
+
+def slope_text(ms):
+    """a fitted slope and its standard error in deg/d, or a dash without data."""
+    return f"{ms[0]:+.3f} ± {ms[1]:.3f} °/d" if np.isfinite(ms[0]) else "—"
+
+
 def print_tables(all_ens, summary):
     for label, by_h in all_ens.items():
         rows, s0, s70 = summary[label]
@@ -209,23 +219,23 @@ def print_tables(all_ens, summary):
             se = s / np.sqrt(n) if n > 1 else np.nan
             print(f"| {r['H']:g} ({r['H_measured']:.2f}) | {r['n']} | {r['grains']} + {r['base']}, {r['length']:g} d "
                   f"| {fmt(r['theta0'])}° | {fmt(r['theta70'])}° | {fmt(r['shift'])}° ({fmt((se, np.nan, 1))}°) "
-                  f"| {fmt(r['tcon0'])} / {fmt(r['tcon70'])} | {ptxt} | {r['wall0']:.0f} / {r['wall70']:.0f} |")
+                  f"| {fmt(r['tcon0'])} / {fmt(r['tcon70'])} | {ptxt} | {num(r['wall0'], '.0f')} / {num(r['wall70'], '.0f')} |")
         print("\nfirst angle with a flow that spreads (partial or uniform), mean ± s.d.:")
         for r in rows:
             m, s, n = r["onset_shift"]
             se = s / np.sqrt(n) if n > 1 else np.nan
             print(f"- H = {r['H']:g} d: 0 kHz {fmt(r['onset0'])}°, 70 kHz {fmt(r['onset70'])}°, "
                   f"shift {fmt(r['onset_shift'])}° (s.e. {fmt((se, np.nan, 1))}°)")
-        print(f"\nslope of θ_m(H/d), all packings: 0 kHz {s0[0]:+.3f} ± {s0[1]:.3f} °/d, "
-              f"70 kHz {s70[0]:+.3f} ± {s70[1]:.3f} °/d (paper 000 ≈ {PAPER_SLOPE}°/d)")
+        print(f"\nslope of θ_m(H/d), all packings: 0 kHz {slope_text(s0)}, "
+              f"70 kHz {slope_text(s70)} (paper 000 ≈ {PAPER_SLOPE}°/d)")
         t0, t70 = theta_slope(by_h, "f0", 6.0), theta_slope(by_h, "f70", 6.0)
-        print(f"the same from H = 6 d up (paper 000's grey zone of Fig. 7 left out): 0 kHz {t0[0]:+.3f} ± "
-              f"{t0[1]:.3f} °/d, 70 kHz {t70[0]:+.3f} ± {t70[1]:.3f} °/d")
+        print(f"the same from H = 6 d up (paper 000's grey zone of Fig. 7 left out): 0 kHz {slope_text(t0)}, "
+              f"70 kHz {slope_text(t70)}")
         print("\nper packing (seed: θ_m 0 / 70 kHz, t_con 0 / 70 kHz, first spreading flow 0 / 70 kHz):")
         for H, packs in sorted(by_h.items()):
             print(f"- H = {H:g} d: " + "; ".join(
-                f"s{p['seed']}: {p['f0'][0]:g} / {p['f70'][0]:g}°, {p['f0'][1]:.2f} / {p['f70'][1]:.2f} s, "
-                f"{p['f0_onset']:g} / {p['f70_onset']:g}°" for p in packs))
+                f"s{p['seed']}: {num(p['f0'][0])} / {num(p['f70'][0])}°, {num(p['f0'][1], '.2f')} / "
+                f"{num(p['f70'][1], '.2f')} s, {num(p['f0_onset'])} / {num(p['f70_onset'])}°" for p in packs))
         tc = [(H, tag, th, t) for H, packs in sorted(by_h.items()) for p in packs
               for tag in ("f0", "f70") for th, t in p[f"tcon_{tag}"]]
         if tc:

@@ -99,3 +99,15 @@ def test_slope_from_6_d_up(collect, out):
     assert collect.theta_slope(by_h, "f0", 6.0)[0] == pytest.approx(-0.5)
     # 70 kHz: 14.5 and 14.5 at 6 d, 13 and 14 at 9 d
     assert collect.theta_slope(by_h, "f70", 6.0)[0] == pytest.approx((13.5 - 14.5) / 3)
+
+
+def test_unmeasured_values_print_as_dashes(collect, out, capsys):
+    # H = 3 d packing 1 without its 0 kHz ramp: its theta_m, t_con, onset and
+    # wall time at 0 kHz are not measured, and the tables say so with a dash
+    os.remove(out / "ensemble_periodic" / "H3" / "s1" / "log.f0")
+    all_ens = collect.ensembles(str(out))
+    collect.print_tables(all_ens, {k: collect.summarise(v) for k, v in all_ens.items()})
+    text = capsys.readouterr().out
+    per_packing = next(line for line in text.splitlines() if line.startswith("- H = 3 d: s1"))
+    assert per_packing.startswith("- H = 3 d: s1: — / 16°, — / 0.20 s, — / 15.5°")
+    assert "nan" not in text.split("t_con above")[0]
