@@ -11,8 +11,8 @@ t_con, one `angle` line per tested angle, the LAMMPS "Total wall time" lines)
 into RECORD_DIR (default examples/avalanche/record, committed), under the same
 paths, together with each geometry's jobs.txt.  A job recorded earlier and not
 present in OUT_DIR is kept, so the record grows across machines; a job present
-in both is written again from OUT_DIR.  Unfinished ramps (no theta_m line yet)
-are left out.  `collect.py RECORD_DIR` then rebuilds the tables and the figures
+in both is written again from OUT_DIR.  Unfinished deposits and ramps (no
+deposit or theta_m line yet) are left out.  `collect.py RECORD_DIR` then rebuilds the tables and the figures
 that need no dumps (Fig. 7 and Fig. 8).
 """
 import glob
@@ -31,8 +31,11 @@ def result_lines(log):
 
 
 def finished(lines, name):
-    """A deposit log, or a ramp / t_con log with its theta_m line."""
-    return name == "log.deposit" or any("theta_m = " in line for line in lines)
+    """A deposit log with its deposit line, or a ramp / t_con log with its
+    theta_m line."""
+    if name == "log.deposit":
+        return any(line.startswith("deposit:") for line in lines)
+    return any("theta_m = " in line for line in lines)
 
 
 def record_jobs(src, dst):

@@ -80,3 +80,12 @@ def test_collect_reads_the_record_as_the_outputs(record, collect, tmp_path):
 def test_no_outputs_is_an_error(record, tmp_path):
     with pytest.raises(SystemExit, match="no production outputs"):
         record.main(str(tmp_path / "missing"), str(tmp_path / "rec"))
+
+
+def test_deposit_under_way_left_out(record, tmp_path):
+    # a packing whose deposit is still running: its log has no deposit line yet
+    out, rec = tmp_path / "out", tmp_path / "rec"
+    d = packing(out, 1, f70_finished=False)
+    (d / "log.deposit").write_text("LAMMPS (4 Feb 2025)\n  Step Time\n")
+    assert record.record(str(out), str(rec)) == 1
+    assert os.listdir(rec / "ensemble" / "H6" / "s1") == ["log.f0"]
