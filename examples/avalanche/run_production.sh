@@ -11,8 +11,8 @@
 #   periodic  H/d = 3, 6 (L = 80 d) and 14.4 (L = 40 d), periodic, packings
 #             4871 1 2 3, 0 and 70 kHz                                  (default)
 #   tcon      t_con above theta_m for H/d = 6 (and at 19 deg) and 14.4, and for
-#             the free-ends H/d = 6 layers at 0 and 70 kHz (after their ramps
-#             of the set free)
+#             the free-ends H/d = 6, 11.4 and 14.4 layers at 0 and 70 kHz
+#             (after their ramps of the set free)
 #   free      H/d = 3, 6, 14.4, 8.7 and 11.4 with free ends, 400 d, packings
 #             1 2 3 4, 0 Hz first, then 70 kHz
 #   more      H/d = 8.7 and 11.4 (L = 40 d), periodic, packings 4871 1 2 3
@@ -46,6 +46,10 @@ for set in "${sets[@]}"; do
       done
       for s in "${seeds[@]}"; do
         AVALANCHE_FREE=0 AVALANCHE_LAYER=40 "$E" "$build" 14.4 "$s" tcon0 14.4 "$s" tcon70e3
+      done
+      # free ends, H = 11.4 and 14.4 d (paper 000's Fig. 8): theta_m + 1, 2, 3 deg
+      for H in 11.4 14.4; do
+        for s in 1 2 3 4; do "$E" "$build" "$H" "$s" tcon0 "$H" "$s" tcon70e3; done
       done ;;
     free)
       # 0 Hz ramps of every H/d first (cheap), then the 70 kHz ones, H/d = 3,
