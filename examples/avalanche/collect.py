@@ -148,6 +148,13 @@ def mean_sd(values):
     return float(v.mean()), float(v.std(ddof=1)) if len(v) > 1 else np.nan, len(v)
 
 
+def tcon_one_degree_above(packs, tag):
+    """(mean, s.d., count) of t_con in the runs one degree above each
+    packing's theta_m (paper 000 Fig. 8's first angle above theta_m); a run
+    that never became uniform is not counted."""
+    return mean_sd([t for p in packs for th, t in p[f"tcon_{tag}"] if th == p[tag][0] + 1.0])
+
+
 def slope(points):
     """Least-squares slope of theta against the measured H/d over (target H,
     measured H, theta) points of all packings, with its standard error; nan
@@ -240,12 +247,17 @@ def print_tables(all_ens, summary):
               for tag in ("f0", "f70") for th, t in p[f"tcon_{tag}"]]
         if tc:
             print("\nt_con above θ_m (one run per angle, from the last static state of the ramp; "
-                  "nan: no uniform flow within 1.3 s):")
+                  "—: no uniform flow within 1.3 s):")
             for H in sorted({h for h, *_ in tc}):
                 for tag in ("f0", "f70"):
                     pts = sorted((th, t) for h, g, th, t in tc if h == H and g == tag)
                     if pts:
-                        print(f"- H = {H:g} d, {tag[1:]} kHz: " + ", ".join(f"{th:g}° {t:.2f} s" for th, t in pts))
+                        print(f"- H = {H:g} d, {tag[1:]} kHz: " + ", ".join(f"{th:g}° {num(t, '.2f')} s"
+                                                                            for th, t in pts))
+            print("\nt_con one degree above θ_m, mean ± s.d. (runs):")
+            for H in sorted({h for h, *_ in tc}):
+                m0, m70 = (tcon_one_degree_above(by_h[H], tag) for tag in ("f0", "f70"))
+                print(f"- H = {H:g} d: 0 kHz {fmt(m0)} s ({m0[2]}), 70 kHz {fmt(m70)} s ({m70[2]})")
 
 
 def thetam_table(rows, path):

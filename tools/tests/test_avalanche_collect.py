@@ -111,3 +111,24 @@ def test_unmeasured_values_print_as_dashes(collect, out, capsys):
     per_packing = next(line for line in text.splitlines() if line.startswith("- H = 3 d: s1"))
     assert per_packing.startswith("- H = 3 d: s1: — / 16°, — / 0.20 s, — / 15.5°")
     assert "nan" not in text.split("t_con above")[0]
+
+
+def test_tcon_one_degree_above_theta_m(collect, out, capsys):
+    # 0 kHz theta_m: 19.5 (3 d, s1) and 20.5 (3 d, s2); runs at theta_m + 1
+    # give 0.3 and 0.5 s, the run at theta_m + 2 of s1 (0.2 s) is not counted,
+    # and a run that never became uniform (s2 at 70 kHz) is left out
+    s1, s2 = (out / "ensemble_periodic" / "H3" / f"s{k}" for k in (1, 2))
+    ramp(s1, "tcon_f0_20.5", [], 20.5, 0.3)
+    ramp(s1, "tcon_f0_21.5", [], 21.5, 0.2)
+    ramp(s2, "tcon_f0_21.5", [], 21.5, 0.5)
+    ramp(s1, "tcon_f70_17.0", [], 17.0, 0.1)
+    (s2 / "log.tcon_f70_17.0").write_text("avalanche tcon_f70_17.0: freq 70e3 Hz  theta_m = none deg  t_con = -1 s\n")
+    all_ens = collect.ensembles(str(out))
+    packs = all_ens["periodic"][3.0]
+    m, s, n = collect.tcon_one_degree_above(packs, "f0")
+    assert (m, n) == (pytest.approx(0.4), 2) and s == pytest.approx(np.sqrt(0.02))
+    assert collect.tcon_one_degree_above(packs, "f70")[::2] == (pytest.approx(0.1), 1)
+    collect.print_tables(all_ens, {k: collect.summarise(v) for k, v in all_ens.items()})
+    text = capsys.readouterr().out
+    assert "- H = 3 d, 70 kHz: 17° 0.10 s, 17° — s" in text
+    assert "- H = 3 d: 0 kHz 0.40 ± 0.14 s (2), 70 kHz 0.10 s (1)" in text
