@@ -14,6 +14,8 @@ computes
   t_con       the delay from the tilt to a uniform flow (sigma_1 < 0.3 and
               sigma_2 < 0.9 held for a while);
   theta_m     the first angle of a tilt ramp with a uniform flow;
+  flow shape  mean velocity of the bottom half over that of the top half
+              of the uniform flow (0.40 for Bagnold's profile, 1 for a plug);
   spectrum    eigenfrequencies of the normal-spring network (paper 000 Eq. 2.9,
               the model of fix acoustic/mindlin "model normal") from a dump
               local with k_n and a dump of the positions and masses.
@@ -21,7 +23,8 @@ computes
 Units are those of the run (SI for examples/avalanche).  Command line:
 
     python3 tools/avalanche.py sigma   run.dump [--g 9.81]     sigma_1, sigma_2, E_k/E_t per frame
-    python3 tools/avalanche.py ramp    run.series              state of each angle, theta_m, t_con
+    python3 tools/avalanche.py ramp    run.series              state of each angle, theta_m, t_con,
+                                                                flow shape at theta_m
     python3 tools/avalanche.py spectrum run.dump run.contacts  frequency quantiles of the network
 """
 import argparse
@@ -209,6 +212,17 @@ def theta_m(results):
     return np.nan, np.nan
 
 
+def bottom_to_top_velocity(series, theta, nsamples=10):
+    """Mean downslope velocity of the bottom half of the observed layer over
+    that of its top half (series columns vx2 / vx1) in the last `nsamples`
+    samples at angle `theta`: the shape of a flow, 0.40 for Bagnold's profile
+    v ~ 1 - (1 - z/H)^(3/2), 1/3 for a linear one, 1 for a plug sliding on
+    its base.  At theta_m these are the samples of the uniform hold, where
+    in.avalanche stops a ramp."""
+    idx = np.flatnonzero(np.isclose(series["theta"], theta))[-nsamples:]
+    return float(np.mean(series["vx2"][idx]) / np.mean(series["vx1"][idx]))
+
+
 def t_con(time, sigma1, sigma2, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, hold=1):
     """First time from which sigma_1 < eps1 and sigma_2 < eps2 hold for `hold` samples."""
     n = runs_of((np.asarray(sigma1) < eps1) & (np.asarray(sigma2) < eps2))
@@ -278,12 +292,16 @@ def main(argv=None):
             o = frame_observables(fr, g=a.g, obs=a.obs)
             print(f"{o['timestep']} {o['theta']:g} {o['sigma1']:.4g} {o['sigma2']:.4g} {o['ratio']:.4g}")
     elif a.cmd == "ramp":
-        res = ramp_results(read_series(a.series), first_theta=a.theta0, eps_e=a.epsE, tfollow=a.tfollow)
+        series = read_series(a.series)
+        res = ramp_results(series, first_theta=a.theta0, eps_e=a.epsE, tfollow=a.tfollow)
         for x in res:
             print(f"theta {x.theta:5.2f}  {x.state:8s} after {x.duration:.3f} s  max Ek/Et {x.max_ratio:.2e}"
                   + (f"  t_con {x.t_con:.3f} s" if x.state == "uniform" else ""))
         tm, tc = theta_m(res)
         print(f"theta_m = {tm:g} deg  t_con = {tc:.3f} s")
+        if np.isfinite(tm):
+            print(f"bottom/top half velocity of the uniform flow: {bottom_to_top_velocity(series, tm):.3f} "
+                  "(Bagnold profile 0.40, linear 0.33, plug 1)")
     elif a.cmd == "spectrum":
         atoms = read_dump(a.dump)[a.frame]
         cont = [c for c in read_dump(a.contacts) if c.timestep == atoms.timestep]

@@ -186,6 +186,22 @@ def test_ramp_and_theta_m(tmp_path):
     assert math.isnan(av.theta_m(res[:2])[0])
 
 
+def test_bottom_to_top_velocity_of_the_last_samples():
+    # at 11 deg the flow first slides as a plug (vx2 = vx1), then shears:
+    # the last 10 samples have vx2 / vx1 = 0.4; other angles do not count
+    rows = [[k * DT, 10.5, 0, 0, 0, 1.0, 9.0] for k in range(5)]
+    rows += [[(5 + k) * DT, 11.0, 0, 0, 0, 2.0, 2.0] for k in range(20)]
+    rows += [[(25 + k) * DT, 11.0, 0, 0, 0, 1.0 + k % 2, 0.4 * (1.0 + k % 2)] for k in range(10)]
+    rows += [[35 * DT, 11.5, 0, 0, 0, 1.0, 5.0]]
+    series = dict(zip(av.SERIES_COLUMNS, np.array(rows).T))
+    assert av.bottom_to_top_velocity(series, 11.0) == pytest.approx(0.4)
+    assert av.bottom_to_top_velocity(series, 11.0, nsamples=30) == pytest.approx((0.4 * 15 + 40) / (15 + 40))
+    # Bagnold's profile v = 1 - (1 - z)^1.5, halves of the layer: the 0.40 of the docstring
+    z = (np.arange(100000) + 0.5) / 100000
+    v = 1 - (1 - z) ** 1.5
+    assert v[z < 0.5].mean() / v[z >= 0.5].mean() == pytest.approx(0.398, abs=1e-3)
+
+
 def test_network_spectrum_of_a_clamped_grain():
     # grain 2 between clamped grains 1 and 3 along x, springs k: omega_x^2 = 2k/m,
     # no stiffness along y (a zero mode); the periodic image of 3 is used (box 0..4)
