@@ -16,6 +16,8 @@ computes
   theta_m     the first angle of a tilt ramp with a uniform flow;
   flow shape  mean velocity of the bottom half over that of the top half
               of the uniform flow (0.40 for Bagnold's profile, 1 for a plug);
+  profile     mu*/mu and f_n of the contacts in bins of height above the
+              base, at the last dump frame of an angle;
   spectrum    eigenfrequencies of the normal-spring network (paper 000 Eq. 2.9,
               the model of fix acoustic/mindlin "model normal") from a dump
               local with k_n and a dump of the positions and masses.
@@ -25,6 +27,8 @@ Units are those of the run (SI for examples/avalanche).  Command line:
     python3 tools/avalanche.py sigma   run.dump [--g 9.81]     sigma_1, sigma_2, E_k/E_t per frame
     python3 tools/avalanche.py ramp    run.series              state of each angle, theta_m, t_con,
                                                                 flow shape at theta_m
+    python3 tools/avalanche.py profile run.dump run.contacts --theta 10.5 [--dz 2] [--obs 0.3 0.7]
+                                                                mu*/mu against the height
     python3 tools/avalanche.py spectrum run.dump run.contacts  frequency quantiles of the network
 """
 import argparse
@@ -120,6 +124,40 @@ def frame_observables(frame, g=9.81, grain_type=1, base_type=2, obs=(0.0, 1.0)):
                          None if omega is None else omega[grains])
     theta = frame["v_th"][0] if "v_th" in frame and len(frame) else np.nan
     return {"timestep": frame.timestep, "theta": theta, "sigma1": s1, "sigma2": s2, "ratio": ratio}
+
+
+def contact_heights(atoms, contacts, grain_type=1, base_type=2):
+    """Height of each contact's midpoint above the top of the base, in mean
+    grain diameters, and its x (that of the contact's first grain)."""
+    contacts = contact_columns(contacts)
+    index = {int(t): k for k, t in enumerate(atoms["id"])}
+    i = np.array([index[int(t)] for t in contacts["i"]], int)
+    j = np.array([index[int(t)] for t in contacts["j"]], int)
+    t = atoms["type"]
+    d = 2.0 * np.mean(atoms["radius"][t == grain_type])
+    yb = atoms["y"][t == base_type].max() if np.any(t == base_type) else atoms["y"].min()
+    return (0.5 * (atoms["y"][i] + atoms["y"][j]) - yb) / d, atoms["x"][i]
+
+
+def binned_means(z, values, edges):
+    """Mean of `values` and their count in the bins [edges[k], edges[k + 1])
+    of z (nan where a bin is empty)."""
+    z, values = np.asarray(z, float), np.asarray(values, float)
+    k = np.digitize(z, edges) - 1
+    inside = (k >= 0) & (k < len(edges) - 1)
+    count = np.bincount(k[inside], minlength=len(edges) - 1)
+    total = np.bincount(k[inside], values[inside], minlength=len(edges) - 1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return total / count, count
+
+
+def last_frame_at(frames, theta):
+    """The last frame of a dump whose angle column v_th is theta."""
+    at = [f for f in frames if len(f) and np.isclose(f["v_th"][0], theta)]
+    if not at:
+        raise ValueError(f"no dump frame at {theta:g} deg; angles are "
+                         f"{sorted({float(f['v_th'][0]) for f in frames if len(f)})}")
+    return at[-1]
 
 
 # ---------------------------------------------------------------- protocol
@@ -281,6 +319,12 @@ def main(argv=None):
     r.add_argument("--epsE", type=float, default=EPS_E)
     r.add_argument("--tfollow", type=float, default=1.2, help="s a rearrangement is followed after the window "
                    "(in.avalanche's tfollow; the demo uses 0.3)")
+    pr = sub.add_parser("profile", help="mu*/mu and f_n of the contacts against the height above the base")
+    pr.add_argument("dump")
+    pr.add_argument("contacts")
+    pr.add_argument("--theta", type=float, required=True, help="angle (deg): its last dump frame is used")
+    pr.add_argument("--dz", type=float, default=2.0, help="bin height in grain diameters")
+    pr.add_argument("--obs", type=float, nargs=2, default=(0.0, 1.0), help="observed x range (fractions of the box)")
     sp = sub.add_parser("spectrum", help="eigenfrequencies of the contact network")
     sp.add_argument("dump")
     sp.add_argument("contacts")
@@ -302,6 +346,23 @@ def main(argv=None):
         if np.isfinite(tm):
             print(f"bottom/top half velocity of the uniform flow: {bottom_to_top_velocity(series, tm):.3f} "
                   "(Bagnold profile 0.40, linear 0.33, plug 1)")
+    elif a.cmd == "profile":
+        atoms = last_frame_at(read_dump(a.dump), a.theta)
+        cont = [c for c in read_dump(a.contacts) if c.timestep == atoms.timestep]
+        if not cont:
+            sys.exit(f"no contact frame at timestep {atoms.timestep}")
+        c = contact_columns(cont[0])
+        z, x = contact_heights(atoms, c)
+        lo, hi = atoms.box[0]
+        inobs = (x >= lo + a.obs[0] * (hi - lo)) & (x < lo + a.obs[1] * (hi - lo))
+        edges = np.arange(0.0, z[inobs].max() + a.dz, a.dz)
+        mu, n = binned_means(z[inobs], c["mu_ratio"][inobs], edges)
+        weak = binned_means(z[inobs], c["mu_ratio"][inobs] < 0.5, edges)[0]
+        fn = binned_means(z[inobs], c["fn"][inobs], edges)[0]
+        print(f"# timestep {atoms.timestep}, {a.theta:g} deg: z/d (bin) contacts mean_mu*/mu "
+              f"fraction_mu*/mu<0.5 mean_f_n")
+        for k in np.flatnonzero(n):
+            print(f"{edges[k]:g}-{edges[k + 1]:g} {n[k]} {mu[k]:.3f} {weak[k]:.2f} {fn[k]:.4g}")
     elif a.cmd == "spectrum":
         atoms = read_dump(a.dump)[a.frame]
         cont = [c for c in read_dump(a.contacts) if c.timestep == atoms.timestep]

@@ -78,6 +78,46 @@ def test_read_dump_local_contacts(tmp_path):
     np.testing.assert_allclose(c["mu_ratio"], [0.25, 1.0])
 
 
+def contacts_text(frames):
+    """A dump local of fix acoustic/mindlin: (timestep, rows i j f_n k_n U_t mu*/mu)."""
+    out = []
+    for step, rows in frames:
+        out += ["ITEM: TIMESTEP", str(step), "ITEM: NUMBER OF ENTRIES", str(len(rows)),
+                "ITEM: BOX BOUNDS pp fm pp", "0 10", "-1 10", "-0.5 0.5",
+                "ITEM: ENTRIES f_us[1] f_us[2] f_us[3] f_us[4] f_us[5] f_us[6]"]
+        out += [" ".join(f"{v:g}" for v in r) for r in rows]
+    return "\n".join(out) + "\n"
+
+
+def test_friction_profile_against_height(tmp_path, capsys):
+    # grains of diameter 1 at y = 1 (ids 3, 4) and y = 3 (ids 5, 6) on base
+    # grains at y = 0: contact midpoints at 0.5 and 1 (bin 0-2), 2 and 3 (bin 2-4)
+    dump, contacts = tmp_path / "run.dump", tmp_path / "run.contacts"
+    dump.write_text(dump_text([(100, layer_rows(12.5, (0, 0), (0, 0))), (200, layer_rows(13.0, (0, 0), (0, 0))),
+                               (300, layer_rows(12.5, (0, 0), (0, 0)))]))
+    pairs = [(1, 3, 2.0), (3, 4, 1.0), (4, 5, 0.5), (5, 6, 0.25)]
+    contacts.write_text(contacts_text([(100, [[i, j, fn, 1, 0, 1.0] for i, j, fn in pairs]),
+                                       (300, [[i, j, fn, 1, 0, mu] for (i, j, fn), mu
+                                              in zip(pairs, (0.2, 0.4, 0.8, 1.0))])]))
+    atoms = av.last_frame_at(read_dump(dump), 12.5)
+    assert atoms.timestep == 300
+    with pytest.raises(ValueError, match="no dump frame at 14 deg"):
+        av.last_frame_at(read_dump(dump), 14.0)
+    z, x = av.contact_heights(atoms, av.contact_columns(read_dump(contacts)[1]))
+    np.testing.assert_allclose(z, [0.5, 1.0, 2.0, 3.0])
+    np.testing.assert_allclose(x, [1, 1, 3, 5])
+    mean, n = av.binned_means(z, [0.2, 0.4, 0.8, 1.0], [0.0, 2.0, 4.0, 6.0])
+    np.testing.assert_allclose(mean[:2], [0.3, 0.9])
+    assert list(n) == [2, 2, 0] and np.isnan(mean[2])
+    assert av.main(["profile", str(dump), str(contacts), "--theta", "12.5"]) == 0
+    rows = [line.split() for line in capsys.readouterr().out.splitlines() if not line.startswith("#")]
+    assert rows == [["0-2", "2", "0.300", "1.00", "1.5"], ["2-4", "2", "0.900", "0.00", "0.375"]]
+    # the observed window x < 2 keeps the contacts of grain 1 and 3 alone
+    av.main(["profile", str(dump), str(contacts), "--theta", "12.5", "--obs", "0", "0.2"])
+    rows = [line.split() for line in capsys.readouterr().out.splitlines() if not line.startswith("#")]
+    assert rows == [["0-2", "2", "0.300", "1.00", "1.5"]]
+
+
 def samples(n, **overrides):
     base = dict(ratio=np.full(n, 1e-10), sigma1=np.full(n, 5.0), sigma2=np.full(n, 5.0),
                 mobile=np.zeros(n))
