@@ -10,15 +10,20 @@ from lammps_output import Snapshot, read_dump
 DT = 1e-3
 
 
-def dump_text(frames):
-    """A LAMMPS dump custom with columns id type radius mass x y vx vy omegaz v_th."""
+def lammps_dump_text(frames, item, columns):
+    """A LAMMPS text dump of (timestep, rows) frames: item ATOMS (dump custom)
+    or ENTRIES (dump local), box 0 10 x -1 10 x -0.5 0.5."""
     out = []
     for step, rows in frames:
-        out += ["ITEM: TIMESTEP", str(step), "ITEM: NUMBER OF ATOMS", str(len(rows)),
-                "ITEM: BOX BOUNDS pp fm pp", "0 10", "-1 10", "-0.5 0.5",
-                "ITEM: ATOMS id type radius mass x y vx vy omegaz v_th"]
+        out += ["ITEM: TIMESTEP", str(step), f"ITEM: NUMBER OF {item}", str(len(rows)),
+                "ITEM: BOX BOUNDS pp fm pp", "0 10", "-1 10", "-0.5 0.5", f"ITEM: {item} {columns}"]
         out += [" ".join(f"{v:g}" for v in r) for r in rows]
     return "\n".join(out) + "\n"
+
+
+def dump_text(frames):
+    """A dump custom with columns id type radius mass x y vx vy omegaz v_th."""
+    return lammps_dump_text(frames, "ATOMS", "id type radius mass x y vx vy omegaz v_th")
 
 
 def layer_rows(theta, vtop, vbottom):
@@ -79,14 +84,8 @@ def test_read_dump_local_contacts(tmp_path):
 
 
 def contacts_text(frames):
-    """A dump local of fix acoustic/mindlin: (timestep, rows i j f_n k_n U_t mu*/mu)."""
-    out = []
-    for step, rows in frames:
-        out += ["ITEM: TIMESTEP", str(step), "ITEM: NUMBER OF ENTRIES", str(len(rows)),
-                "ITEM: BOX BOUNDS pp fm pp", "0 10", "-1 10", "-0.5 0.5",
-                "ITEM: ENTRIES f_us[1] f_us[2] f_us[3] f_us[4] f_us[5] f_us[6]"]
-        out += [" ".join(f"{v:g}" for v in r) for r in rows]
-    return "\n".join(out) + "\n"
+    """A dump local of fix acoustic/mindlin: rows i j f_n k_n U_t mu*/mu."""
+    return lammps_dump_text(frames, "ENTRIES", "f_us[1] f_us[2] f_us[3] f_us[4] f_us[5] f_us[6]")
 
 
 def test_friction_profile_against_height(tmp_path, capsys):
