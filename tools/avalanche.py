@@ -151,6 +151,30 @@ def binned_means(z, values, edges):
         return total / count, count
 
 
+def friction_profile(atoms, contacts, dz=2.0, obs=(0.0, 1.0)):
+    """mu*/mu against the height above the base: one row (z_lo, z_hi,
+    contacts, mean mu*/mu, fraction with mu*/mu < 0.5, mean f_n) per
+    non-empty bin of height dz (grain diameters), over the contacts whose
+    first grain lies in the observed x range (fractions of the box)."""
+    c = contact_columns(contacts)
+    z, x = contact_heights(atoms, c)
+    lo, hi = atoms.box[0]
+    inobs = (x >= lo + obs[0] * (hi - lo)) & (x < lo + obs[1] * (hi - lo))
+    z, mu, fn = z[inobs], c["mu_ratio"][inobs], c["fn"][inobs]
+    edges = np.arange(0.0, z.max() + dz, dz)
+    mean_mu, n = binned_means(z, mu, edges)
+    weak, mean_fn = binned_means(z, mu < 0.5, edges)[0], binned_means(z, fn, edges)[0]
+    return [(edges[k], edges[k + 1], n[k], mean_mu[k], weak[k], mean_fn[k]) for k in np.flatnonzero(n)]
+
+
+def contacts_at(path, timestep):
+    """The frame of a contacts dump local written at `timestep`."""
+    match = [c for c in read_dump(path) if c.timestep == timestep]
+    if not match:
+        sys.exit(f"no contact frame at timestep {timestep} in {path}")
+    return match[0]
+
+
 def last_frame_at(frames, theta):
     """The last frame of a dump whose angle column v_th is theta."""
     at = [f for f in frames if len(f) and np.isclose(f["v_th"][0], theta)]
@@ -348,27 +372,13 @@ def main(argv=None):
                   "(Bagnold profile 0.40, linear 0.33, plug 1)")
     elif a.cmd == "profile":
         atoms = last_frame_at(read_dump(a.dump), a.theta)
-        cont = [c for c in read_dump(a.contacts) if c.timestep == atoms.timestep]
-        if not cont:
-            sys.exit(f"no contact frame at timestep {atoms.timestep}")
-        c = contact_columns(cont[0])
-        z, x = contact_heights(atoms, c)
-        lo, hi = atoms.box[0]
-        inobs = (x >= lo + a.obs[0] * (hi - lo)) & (x < lo + a.obs[1] * (hi - lo))
-        edges = np.arange(0.0, z[inobs].max() + a.dz, a.dz)
-        mu, n = binned_means(z[inobs], c["mu_ratio"][inobs], edges)
-        weak = binned_means(z[inobs], c["mu_ratio"][inobs] < 0.5, edges)[0]
-        fn = binned_means(z[inobs], c["fn"][inobs], edges)[0]
         print(f"# timestep {atoms.timestep}, {a.theta:g} deg: z/d (bin) contacts mean_mu*/mu "
               f"fraction_mu*/mu<0.5 mean_f_n")
-        for k in np.flatnonzero(n):
-            print(f"{edges[k]:g}-{edges[k + 1]:g} {n[k]} {mu[k]:.3f} {weak[k]:.2f} {fn[k]:.4g}")
+        for z0, z1, n, mu, weak, fn in friction_profile(atoms, contacts_at(a.contacts, atoms.timestep), a.dz, a.obs):
+            print(f"{z0:g}-{z1:g} {n} {mu:.3f} {weak:.2f} {fn:.4g}")
     elif a.cmd == "spectrum":
         atoms = read_dump(a.dump)[a.frame]
-        cont = [c for c in read_dump(a.contacts) if c.timestep == atoms.timestep]
-        if not cont:
-            sys.exit(f"no contact frame at timestep {atoms.timestep}")
-        f = network_spectrum(atoms, cont[0])
+        f = network_spectrum(atoms, contacts_at(a.contacts, atoms.timestep))
         nz = f[f > 1e-6 * f.max()]
         q = np.percentile(nz, [1, 10, 50, 90, 99, 100])
         print(f"{len(f)} modes, {len(f) - len(nz)} zero; frequency percentiles 1/10/50/90/99/100: "

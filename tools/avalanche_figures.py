@@ -39,10 +39,7 @@ from lammps_output import read_ave_time_vector, read_dump  # noqa: E402
 
 def _frames(dump, contacts, frame):
     atoms = read_dump(dump)[frame]
-    match = [c for c in read_dump(contacts) if c.timestep == atoms.timestep]
-    if not match:
-        sys.exit(f"no contact frame at timestep {atoms.timestep} in {contacts}")
-    return atoms, av.contact_columns(match[0])
+    return atoms, av.contact_columns(av.contacts_at(contacts, atoms.timestep))
 
 
 def fig_modes(a):

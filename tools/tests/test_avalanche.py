@@ -102,7 +102,9 @@ def test_friction_profile_against_height(tmp_path, capsys):
     assert atoms.timestep == 300
     with pytest.raises(ValueError, match="no dump frame at 14 deg"):
         av.last_frame_at(read_dump(dump), 14.0)
-    z, x = av.contact_heights(atoms, av.contact_columns(read_dump(contacts)[1]))
+    with pytest.raises(SystemExit, match="no contact frame at timestep 200"):
+        av.contacts_at(contacts, 200)
+    z, x = av.contact_heights(atoms, av.contact_columns(av.contacts_at(contacts, 300)))
     np.testing.assert_allclose(z, [0.5, 1.0, 2.0, 3.0])
     np.testing.assert_allclose(x, [1, 1, 3, 5])
     mean, n = av.binned_means(z, [0.2, 0.4, 0.8, 1.0], [0.0, 2.0, 4.0, 6.0])
