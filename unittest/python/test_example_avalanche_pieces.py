@@ -5,9 +5,10 @@ other without a gap or a repeat, the series and the dumps go forward in time,
 the answer line is written once.  A piece killed in the middle of an angle
 loses that angle only: what it wrote after the last whole angle is cut off
 before the ramp goes on.  Every angle starts with a full set-up (neighbour
-lists, forces), so the pieced ramp is the uninterrupted one bit for bit: the
-same angle lines, the same dumps of the grains and of the contacts' mu*/mu, at
-0 Hz and at 70 kHz (same deck, same rank count)."""
+lists, forces), so on 1 rank the pieced ramp is the uninterrupted one bit for
+bit: the same angle lines, the same dumps of the grains and of the contacts'
+mu*/mu, at 0 Hz and at 70 kHz (same deck).  On 2 ranks a boundary in a
+flowing layer is not exact (examples/avalanche/RESULTS.md)."""
 import os
 import re
 import subprocess
