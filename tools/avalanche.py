@@ -60,6 +60,12 @@ def contact_columns(frame):
                     {new: frame.columns[old] for new, old in zip(CONTACT_COLUMNS, names)})
 
 
+def rows_of(atoms, ids):
+    """Row of each atom ID (e.g. a contact's i or j column) in a dump frame."""
+    index = {int(t): k for k, t in enumerate(atoms["id"])}
+    return np.array([index[int(t)] for t in ids], int)
+
+
 SERIES_COLUMNS = ["time", "theta", "ratio", "sigma1", "sigma2", "vx1", "vx2", "mobile",
                   "mu_mean", "frac_weak"]
 
@@ -130,9 +136,7 @@ def contact_heights(atoms, contacts, grain_type=1, base_type=2):
     """Height of each contact's midpoint above the top of the base, in mean
     grain diameters, and its x (that of the contact's first grain)."""
     contacts = contact_columns(contacts)
-    index = {int(t): k for k, t in enumerate(atoms["id"])}
-    i = np.array([index[int(t)] for t in contacts["i"]], int)
-    j = np.array([index[int(t)] for t in contacts["j"]], int)
+    i, j = rows_of(atoms, contacts["i"]), rows_of(atoms, contacts["j"])
     t = atoms["type"]
     d = 2.0 * np.mean(atoms["radius"][t == grain_type])
     yb = atoms["y"][t == base_type].max() if np.any(t == base_type) else atoms["y"].min()
@@ -305,7 +309,6 @@ def network_spectrum(atoms, contacts, fixed_types=(2,), dim=2):
     """
     contacts = contact_columns(contacts)
     ids = atoms["id"].astype(int)
-    index = {t: k for k, t in enumerate(ids)}
     free = ~np.isin(atoms["type"].astype(int), fixed_types)
     dof = -np.ones(len(ids), int)
     dof[free] = np.arange(free.sum())
@@ -313,8 +316,7 @@ def network_spectrum(atoms, contacts, fixed_types=(2,), dim=2):
     K = np.zeros((nfree, nfree))
     pos = np.column_stack([atoms["x"], atoms["y"]])[:, :dim]
     lx = atoms.box[0, 1] - atoms.box[0, 0]
-    for i, j, kn in zip(contacts["i"].astype(int), contacts["j"].astype(int), contacts["kn"]):
-        a, b = index[i], index[j]
+    for a, b, kn in zip(rows_of(atoms, contacts["i"]), rows_of(atoms, contacts["j"]), contacts["kn"]):
         r = pos[a] - pos[b]
         r[0] -= lx * np.round(r[0] / lx)
         n = r / np.linalg.norm(r)

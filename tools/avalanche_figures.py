@@ -176,13 +176,11 @@ def fig_tcon(a):
 
 def fig_chains(a):
     atoms, c = _frames(a.dump, a.contacts, a.frame)
-    index = {int(t): k for k, t in enumerate(atoms["id"])}
     x, y = atoms["x"], atoms["y"]
     lx = atoms.box[0, 1] - atoms.box[0, 0]
     segs, width, colour = [], [], []
     fmax = c["fn"].max() if len(c) else 1.0
-    for i, j, fn, s in zip(c["i"].astype(int), c["j"].astype(int), c["fn"], c["mu_ratio"]):
-        p, q = index[i], index[j]
+    for p, q, fn, s in zip(av.rows_of(atoms, c["i"]), av.rows_of(atoms, c["j"]), c["fn"], c["mu_ratio"]):
         dx = x[q] - x[p]
         dx -= lx * np.round(dx / lx)            # nearest periodic image
         segs.append([(x[p], y[p]), (x[p] + dx, y[q])])
