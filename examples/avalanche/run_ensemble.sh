@@ -116,7 +116,7 @@ while [ $# -gt 0 ]; do
       awk -v t="$tres" '/^#/ || $1 + 0 < t - 5e-5' "$tag.series" > "$tag.series.cut" && mv "$tag.series.cut" "$tag.series"
       for dump in "$tag.dump" "$tag.contacts"; do
         [ -f "$dump" ] || continue
-        awk -v s="$step" '/^ITEM: TIMESTEP/ {getline t; keep = (t + 0 < s); if (keep) print $0 "\n" t; next} keep' \
+        awk -v s="$step" '/^ITEM: TIMESTEP/ {getline t; keep = (t + 0 <= s); if (keep) print $0 "\n" t; next} keep' \
           "$dump" > "$dump.cut" && mv "$dump.cut" "$dump"
       done
       # the next angle as the deck wrote it (a resume file of an older deck: theta + 0.5)

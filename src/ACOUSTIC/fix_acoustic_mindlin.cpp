@@ -118,6 +118,7 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
   peratom_freq = nevery;
   local_flag = 1;
   size_local_cols = 6;
+  size_local_rows = 0;
   local_freq = nevery;
   for (double &s : stats) s = 0.0;
 

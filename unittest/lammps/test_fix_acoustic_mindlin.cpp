@@ -13,6 +13,7 @@
 #include "fix.h"
 #include "group.h"
 #include "modify.h"
+#include "update.h"
 #include "vibration_network.h"
 
 #include <gtest/gtest.h>
@@ -489,6 +490,51 @@ TEST(FixParallel, RestartKeepsTheFactors)
   }
   MPI_Barrier(MPI_COMM_WORLD);
   if (AcousticTest::mpi_rank() == 0) std::remove(file.c_str());
+}
+
+TEST(FixParallel, LocalOutputOfARestartedFixIsEmptyUntilItsFirstUpdate)
+{
+  // restarted at a multiple of N: the factors are current, no update at the
+  // setup, and a dump local at that step writes no contact (it once read an
+  // unset row count and stopped on "Too much per-proc info for dump")
+  const std::string file = "fix_acoustic_local.restart";
+  const std::string fix = "fix ac all acoustic/mindlin 40 frequency 3.0 amplitude 5e-4 source base\n";
+  double factorisations = 0.0;
+  {
+    LammpsInstance L;
+    L.commands(layer_deck("off"));
+    L.commands(fix + "run 80\n");
+    factorisations = L.lmp->modify->get_fix_by_id("ac")->compute_vector(11);
+    L.command("write_restart " + file);
+  }
+  ASSERT_GT(factorisations, 0.0);
+  LammpsInstance L;
+  L.command("read_restart " + file);
+  L.commands("comm_modify vel yes\nfix integrate grains nve/sphere\nfix plane all enforce2d\n"
+             "neighbor 0.2 bin\nneigh_modify delay 0 every 1 check yes\nthermo 0\n" + fix +
+             "dump rows all local 40 fix_acoustic_local.dump f_ac[1] f_ac[2] f_ac[6]\nrun 0\n");
+  LAMMPS_NS::Fix *ac = L.lmp->modify->get_fix_by_id("ac");
+  EXPECT_EQ(ac->compute_vector(11), factorisations) << "no update at the setup";
+  EXPECT_EQ(ac->size_local_rows, 0);
+  const LAMMPS_NS::bigint restart_step = L.lmp->update->ntimestep;
+  ASSERT_EQ(restart_step % 40, 0);
+  L.command("run 40");
+  EXPECT_EQ(ac->compute_vector(11), 1.0) << "one factorisation by the solver of this run";
+  EXPECT_GT(ac->size_local_rows, 10);
+  L.command("undump rows");
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (AcousticTest::mpi_rank() == 0) {
+    const std::string dump = file_text("fix_acoustic_local.dump");
+    const std::string at_restart =
+        "ITEM: TIMESTEP\n" + std::to_string(restart_step) + "\nITEM: NUMBER OF ENTRIES\n0\n";
+    EXPECT_NE(dump.find(at_restart), std::string::npos) << dump.substr(0, 300);
+    const std::string next = "ITEM: TIMESTEP\n" + std::to_string(restart_step + 40) + "\nITEM: NUMBER OF ENTRIES\n";
+    const std::size_t rows = dump.find(next);
+    ASSERT_NE(rows, std::string::npos);
+    EXPECT_GT(std::stoi(dump.substr(rows + next.size())), 10);
+    std::remove(file.c_str());
+    std::remove("fix_acoustic_local.dump");
+  }
 }
 
 // ---------------------------------------------------------------------------
