@@ -113,7 +113,10 @@ while [ $# -gt 0 ]; do
     if [ -f "log.$tag" ] && [ -f "$tag.resume" ]; then
       # go on after the last whole angle; drop what a killed piece wrote after it
       read -r theta tres step last next < "$tag.resume"
-      awk -v t="$tres" '/^#/ || $1 + 0 < t - 5e-5' "$tag.series" > "$tag.series.cut" && mv "$tag.series.cut" "$tag.series"
+      # (the series line of that angle's last step stays; the one a killed piece
+      # wrote there for the next angle goes, as the frames after that step)
+      awk -v t="$tres" -v a="$theta" '/^#/ || $1 + 0 < t - 5e-5 || ($1 + 0 < t + 5e-5 && $2 + 0 == a + 0)' \
+        "$tag.series" > "$tag.series.cut" && mv "$tag.series.cut" "$tag.series"
       for dump in "$tag.dump" "$tag.contacts"; do
         [ -f "$dump" ] || continue
         awk -v s="$step" '/^ITEM: TIMESTEP/ {getline t; keep = (t + 0 <= s); if (keep) print $0 "\n" t; next} keep' \

@@ -7,9 +7,10 @@ loses that angle only: what it wrote after the last whole angle is cut off
 before the ramp goes on.  Every angle starts with a full set-up (neighbour
 lists, forces), and a resumed piece keeps the friction factors of fix
 acoustic/mindlin's last update (its restart state), so the pieced ramp is the
-uninterrupted one bit for bit: the same angle lines, the same dumps of the
-grains and of the contacts' mu*/mu, at 0 Hz and at 70 kHz (same deck), on 1
-rank and on 2, with the layer at rest or flowing at the boundary."""
+uninterrupted one bit for bit: the same angle lines, the same series data, the
+same dumps of the grains and of the contacts' mu*/mu, at 0 Hz and at 70 kHz
+(same deck), on 1 rank and on 2, with the layer at rest or flowing at the
+boundary."""
 import os
 import re
 import subprocess
@@ -42,6 +43,11 @@ def angles(log):
 
 def angle_lines(log):
     return [line for line in open(log) if ANGLE.match(line)]
+
+
+def series_data(path):
+    """The data lines of a series (each piece starts with its title line)."""
+    return [line for line in open(path) if not line.startswith("#")]
 
 
 def series_times(path):
@@ -98,6 +104,7 @@ def test_pieced_ramp_is_the_uninterrupted_one_bit_for_bit(whole, pieced):
     assert angle_lines(path / "log.f0") == angle_lines(whole / "log.f0")
     for name in ("f0.dump", "f0.contacts"):
         assert (path / name).read_bytes() == (whole / name).read_bytes(), name
+    assert series_data(path / "f0.series") == series_data(whole / "f0.series")
 
 
 def test_pieces_at_70_kHz_bit_for_bit(tmp_path, whole):
@@ -140,6 +147,7 @@ def test_pieces_in_a_flowing_layer_on_2_ranks_bit_for_bit(tmp_path, whole):
     assert angle_lines(one / "log.f70") == angle_lines(two / "log.f70")
     for name in ("f70.dump", "f70.contacts"):
         assert (one / name).read_bytes() == (two / name).read_bytes(), name
+    assert series_data(one / "f70.series") == series_data(two / "f70.series")
     assert f"theta_m = {states[-1][0]:.2f} deg" in said
 
 
