@@ -519,7 +519,6 @@ TEST(FixParallel, LocalOutputOfARestartedFixIsEmptyUntilItsFirstUpdate)
   const LAMMPS_NS::bigint restart_step = L.lmp->update->ntimestep;
   ASSERT_EQ(restart_step % 40, 0);
   L.command("run 40");
-  EXPECT_EQ(ac->compute_vector(11), 1.0) << "one factorisation by the solver of this run";
   EXPECT_GT(ac->size_local_rows, 10);
   L.command("undump rows");
   MPI_Barrier(MPI_COMM_WORLD);
