@@ -30,6 +30,7 @@ Units are those of the run (SI for examples/avalanche).  Command line:
     python3 tools/avalanche.py profile run.dump run.contacts --theta 10.5 [--dz 2] [--obs 0.3 0.7]
                                                                 mu*/mu against the height
     python3 tools/avalanche.py spectrum run.dump run.contacts  frequency quantiles of the network
+                                     [--frame 0] [--above 70e3]  and the fraction of modes above 70 kHz
 """
 import argparse
 import sys
@@ -330,6 +331,13 @@ def network_spectrum(atoms, contacts, fixed_types=(2,), dim=2):
     return np.sqrt(np.clip(w2, 0.0, None)) / (2.0 * np.pi)
 
 
+def fraction_above(frequencies, f):
+    """Fraction of the non-zero modes (above 1e-6 of the highest) with a
+    frequency above f: where a drive at f falls in the band."""
+    nonzero = frequencies[frequencies > 1e-6 * frequencies.max()]
+    return float((nonzero > f).mean())
+
+
 # ---------------------------------------------------------------- command line
 
 def main(argv=None):
@@ -355,6 +363,8 @@ def main(argv=None):
     sp.add_argument("dump")
     sp.add_argument("contacts")
     sp.add_argument("--frame", type=int, default=-1)
+    sp.add_argument("--above", type=float, nargs="+", default=[],
+                    help="also print the fraction of the non-zero modes above these frequencies")
     a = p.parse_args(argv)
     if a.cmd == "sigma":
         print("# step theta sigma1 sigma2 Ek/Et")
@@ -385,6 +395,8 @@ def main(argv=None):
         q = np.percentile(nz, [1, 10, 50, 90, 99, 100])
         print(f"{len(f)} modes, {len(f) - len(nz)} zero; frequency percentiles 1/10/50/90/99/100: "
               + " ".join(f"{v:.4g}" for v in q))
+        for x in a.above:
+            print(f"fraction of the non-zero modes above {x:g}: {fraction_above(f, x):.4f}")
     return 0
 
 

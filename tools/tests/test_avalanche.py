@@ -258,6 +258,14 @@ def test_network_spectrum_of_a_clamped_grain():
     np.testing.assert_allclose(f, [0.0, math.sqrt(2 * k / m) / (2 * math.pi)], atol=1e-12)
 
 
+def test_fraction_of_modes_above_a_drive():
+    # the zero modes are left out: 1 of the 4 non-zero modes lies above 25
+    f = np.array([0.0, 1e-9, 10.0, 20.0, 30.0, 5.0])
+    assert av.fraction_above(f, 25.0) == pytest.approx(0.25)
+    assert av.fraction_above(f, 30.0) == 0.0
+    assert av.fraction_above(f, 1.0) == 1.0
+
+
 def test_figures_from_synthetic_runs(tmp_path):
     """Each figure of avalanche_figures.py is written from small synthetic files."""
     import avalanche_figures as figs
