@@ -269,6 +269,24 @@ def thetam_table(rows, path):
                     f"{r['theta70'][1]:g} {p[0]:g} {p[1]:g}\n")
 
 
+def tcon_table_lines(all_ens, label, free):
+    """Lines "H<H>_<f>kHz[_free_ends] theta t_con" of Fig. 8: theta_m and the
+    t_con runs of every packing at H = 6, 11.4 and 14.4 d, each geometry once
+    (label: the first geometry; free: the free-ends one, may be the same)."""
+    geometries = [(label, "_free_ends" if label.startswith("free") else "")]
+    if free and free != label:
+        geometries.append((free, "_free_ends"))
+    lines = []
+    for geometry, suffix in geometries:
+        for H in (6.0, 11.4, 14.4):
+            for p in all_ens.get(geometry, {}).get(H, []):
+                for tag in ("f0", "f70"):
+                    for th, t in [(p[tag][0], p[tag][1])] + p[f"tcon_{tag}"]:
+                        if np.isfinite(th) and np.isfinite(t):
+                            lines.append(f"H{H:g}_{tag[1:]}kHz{suffix} {th:g} {t:g}\n")
+    return lines
+
+
 def figures(all_ens, summary, top, figdir):
     os.makedirs(figdir, exist_ok=True)
     label = "periodic" if "periodic" in all_ens else next(iter(all_ens), None)
@@ -285,14 +303,7 @@ def figures(all_ens, summary, top, figdir):
     by_h = all_ens[label]
     table8 = os.path.join(top, "tcon.txt")
     with open(table8, "w") as f:
-        for geometry, suffix in ((label, ""), (free, "_free_ends")):
-            for H in (6.0, 11.4, 14.4):
-                for p in all_ens.get(geometry, {}).get(H, []) if geometry else []:
-                    for tag in ("f0", "f70"):
-                        pts = [(p[tag][0], p[tag][1])] + p[f"tcon_{tag}"]
-                        for th, t in pts:
-                            if np.isfinite(th) and np.isfinite(t):
-                                f.write(f"H{H:g}_{tag[1:]}kHz{suffix} {th:g} {t:g}\n")
+        f.writelines(tcon_table_lines(all_ens, label, free))
         f.write(f"paper000_H6_0kHz 19 {PAPER_TCON_H6_19DEG[0]}\npaper000_H6_70kHz 19 {PAPER_TCON_H6_19DEG[1]}\n")
     if os.path.getsize(table8):
         figs.main(["tcon", table8, "-o", os.path.join(figdir, "fig8_tcon.png"), "--dpi", "80"])

@@ -132,3 +132,16 @@ def test_tcon_one_degree_above_theta_m(collect, out, capsys):
     text = capsys.readouterr().out
     assert "- H = 3 d, 70 kHz: 17° 0.10 s, 17° — s" in text
     assert "- H = 3 d: 0 kHz 0.40 ± 0.14 s (2), 70 kHz 0.10 s (1)" in text
+
+
+def test_tcon_points_of_a_free_ends_record_drawn_once(collect, tmp_path):
+    # a record with the free-ends ensemble only (no periodic set): each
+    # theta_m and t_con run is one point of Fig. 8, labelled free ends
+    path = packing(tmp_path, "ensemble", 6, 1, 6.0, ([(18, "uniform")], 18, 0.5),
+                   ([(15, "uniform")], 15, 0.2))
+    ramp(path, "tcon_f0_19.0", [], 19.0, 0.4)
+    all_ens = collect.ensembles(str(tmp_path))
+    (label,) = all_ens
+    assert label.startswith("free")
+    assert collect.tcon_table_lines(all_ens, label, label) == [
+        "H6_0kHz_free_ends 18 0.5\n", "H6_0kHz_free_ends 19 0.4\n", "H6_70kHz_free_ends 15 0.2\n"]
