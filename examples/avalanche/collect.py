@@ -82,7 +82,23 @@ def packing(path):
         for t in sorted(glob.glob(os.path.join(path, f"log.tcon_{tag}_*"))):
             theta = float(t.rsplit("_", 1)[1])
             p[f"tcon_{tag}"].append((theta, result(t)[1]))
+    p["other"] = other_frequencies(path)
     return p
+
+
+def other_frequencies(path):
+    """Ramps of a packing at drive frequencies other than 0 and 70 kHz
+    (run_ensemble.sh ... H SEED 60e3 writes log.f60): [(kHz, theta_m, t_con,
+    first spreading flow, mean mu*/mu of the last angle before theta_m)]."""
+    rows = []
+    for log in glob.glob(os.path.join(path, "log.f*")):
+        m = re.fullmatch(r"log\.f([0-9.]+)", os.path.basename(log))
+        if not m or m.group(1) in ("0", "70"):
+            continue
+        tm, tc = result(log)
+        if np.isfinite(tm):
+            rows.append((float(m.group(1)), tm, tc, flow_onset(log), last_mu_factor(log)))
+    return sorted(rows)
 
 
 def ensembles(top):
@@ -243,6 +259,7 @@ def print_tables(all_ens, summary):
             print(f"- H = {H:g} d: " + "; ".join(
                 f"s{p['seed']}: {num(p['f0'][0])} / {num(p['f70'][0])}°, {num(p['f0'][1], '.2f')} / "
                 f"{num(p['f70'][1], '.2f')} s, {num(p['f0_onset'])} / {num(p['f70_onset'])}°" for p in packs))
+        print_other_frequencies(by_h)
         tc = [(H, tag, th, t) for H, packs in sorted(by_h.items()) for p in packs
               for tag in ("f0", "f70") for th, t in p[f"tcon_{tag}"]]
         if tc:
@@ -349,6 +366,18 @@ def kappa_figure(rows, top, figdir):
         for k, H, seed, t0, t70, shift, mu in rows:
             f.write(f"{k:g} {H:g} {seed} {shift:g} {mu:g}\n")
     figs.main(["kappa", table, "-o", os.path.join(figdir, "kappa_shift.png"), "--dpi", "80"])
+
+
+def print_other_frequencies(by_h):
+    rows = [(H, p, r) for H, packs in sorted(by_h.items()) for p in packs for r in p["other"]]
+    if not rows:
+        return
+    print("\nother drive frequencies (packing: θ_m, t_con, first spreading flow, mean μ*/μ before θ_m; "
+          "the same packing at 0 / 70 kHz):")
+    for H, p, (khz, tm, tc, onset, mu) in rows:
+        print(f"- H = {H:g} d s{p['seed']}, {khz:g} kHz: {num(tm)}°, {num(tc, '.2f')} s, {num(onset)}°, "
+              f"{num(mu, '.2f')}; 0 / 70 kHz: θ_m {num(p['f0'][0])} / {num(p['f70'][0])}°, "
+              f"first spreading flow {num(p['f0_onset'])} / {num(p['f70_onset'])}°")
 
 
 def main(top=os.path.join(here, "out"), figdir=os.path.join(here, "figures")):

@@ -145,3 +145,20 @@ def test_tcon_points_of_a_free_ends_record_drawn_once(collect, tmp_path):
     assert label.startswith("free")
     assert collect.tcon_table_lines(all_ens, label, label) == [
         "H6_0kHz_free_ends 18 0.5\n", "H6_0kHz_free_ends 19 0.4\n", "H6_70kHz_free_ends 15 0.2\n"]
+
+
+def test_ramps_at_other_frequencies_beside_the_packing(collect, out, capsys):
+    # H = 6 d packing 1 driven at 60 kHz: spreads at 13, uniform at 18.5; the
+    # t_con runs (log.tcon_f60_*) and the 0 / 70 kHz ramps are not "other"
+    s1 = out / "ensemble_periodic" / "H6" / "s1"
+    lines = [angle(12.5, "local", 0.3), angle(13, "partial", 0.35), angle(18.5, "uniform", 0.4),
+             "avalanche f60: freq 60e3 Hz  theta_m = 18.50 deg  t_con = 0.250 s\n"]
+    (s1 / "log.f60").write_text("".join(lines))
+    ramp(s1, "tcon_f60_19.5", [], 19.5, 0.1)
+    all_ens = collect.ensembles(str(out))
+    p = next(q for q in all_ens["periodic"][6.0] if q["seed"] == "1")
+    assert p["other"] == [(60.0, 18.5, 0.25, 13.0, 0.35)]
+    collect.print_other_frequencies(all_ens["periodic"])
+    assert capsys.readouterr().out.strip().splitlines()[-1] == (
+        "- H = 6 d s1, 60 kHz: 18.5°, 0.25 s, 13°, 0.35; 0 / 70 kHz: θ_m 18.5 / 14.5°, "
+        "first spreading flow 18.5 / 14.5°")
