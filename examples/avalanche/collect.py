@@ -8,8 +8,9 @@ and ensemble/H<H>/s<seed>/ (free ends, 400 d), each with log.deposit, log.f0,
 log.f70 and the t_con runs log.tcon_f*_<theta>.  Prints markdown tables:
 packings, theta_m(H/d) per geometry with means and standard deviations, the
 fitted slope of theta_m(H/d) with its standard error, the 70 kHz shift (paired
-by packing), t_con; writes OUT_DIR/summary.json and the figures fig7_thetam,
-fig8_tcon and, where the dumps and series are there (not in the record of
+by packing), t_con, the ramps of a packing at other drive frequencies
+(log.f60 ...) beside its 0 and 70 kHz ramps; writes OUT_DIR/summary.json and
+the figures fig7_thetam, fig8_tcon and, where the dumps and series are there (not in the record of
 record.py), fig10_chains_H6, fig3_modes_H6, fig6_9_sigma_H14.4; with the
 runs of `run_production.sh build kappa` (OUT_DIR/kappa/k<kappa>/), the table
 and figure kappa_shift of the 70 kHz shift against kappa_scale (PNG).
