@@ -121,6 +121,7 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
   size_local_rows = 0;
   local_freq = nevery;
   for (double &s : stats) s = 0.0;
+  for (double &c : counts_before) c = 0.0;
 
   // the step of the last update and the statistics, and the per-atom
   // amplitudes, continue in a run restarted from a restart file
@@ -426,9 +427,9 @@ bool FixAcousticMindlin::solve_drive(std::string &failure)
   stats[TIME_ASSEMBLY] = t1 - t0;
   stats[TIME_FACTORISATION] = timing.analysis + timing.factorisation;
   stats[TIME_SOLVE] = (t2 - t1) - stats[TIME_FACTORISATION];
-  stats[NANALYSES] = static_cast<double>(solver->num_analyses());
-  stats[NFACTORISATIONS] = static_cast<double>(solver->num_factorisations());
-  stats[NREUSES] = static_cast<double>(solver->num_reuses());
+  stats[NANALYSES] = counts_before[0] + static_cast<double>(solver->num_analyses());
+  stats[NFACTORISATIONS] = counts_before[1] + static_cast<double>(solver->num_factorisations());
+  stats[NREUSES] = counts_before[2] + static_cast<double>(solver->num_reuses());
   if (!sol.ok()) {
     error->warning(FLERR, "{}: the Helmholtz solve at f = {} failed ({}: {}; relative residual "
                           "{:.3g}); keeping the previous friction factors. A frequency on a "
@@ -642,6 +643,10 @@ void FixAcousticMindlin::restart(char *buf)
   const auto *list = reinterpret_cast<double *>(buf);
   last_update = static_cast<bigint>(list[0]);
   for (int k = 0; k < NVECTOR; k++) stats[k] = list[k + 1];
+  // the solver of this process counts from 0: its counts add to those of the writer
+  counts_before[0] = stats[NANALYSES];
+  counts_before[1] = stats[NFACTORISATIONS];
+  counts_before[2] = stats[NREUSES];
 }
 
 /* ---------------------------------------------------------------------- */

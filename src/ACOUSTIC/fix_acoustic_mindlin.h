@@ -105,6 +105,7 @@ class FixAcousticMindlin : public Fix {
   double **contact_array;     // local output: one row per contact
   int ncontact_rows, maxcontact_rows;
   double stats[NVECTOR];
+  double counts_before[3];       // analyses, factorisations, reuses of earlier processes (restart)
   Eigen::VectorXcd solution;    // rank 0: DOF amplitudes of the last successful solve
 
   void parse_keywords(int iarg, int narg, char **arg);
