@@ -134,7 +134,10 @@ def test_pieces_in_a_flowing_layer_on_2_ranks_bit_for_bit(tmp_path, whole):
         os.makedirs(tmp_path / sub / "H3" / "s7")
         for name in ("deposit.restart", "log.deposit"):
             (tmp_path / sub / "H3" / "s7" / name).write_bytes((whole / name).read_bytes())
-    flowing = dict(freq="70e3", theta0="17", ranks="2", AVALANCHE_TFOLLOW="0")
+    # from 14 deg the layer creeps after the pre-ramp and flows from about 17.5
+    # deg; a start at 17 deg flowed uniformly at once on one machine (the path of
+    # a 70 kHz ramp changes with the BLAS kernels), leaving no boundary to test
+    flowing = dict(freq="70e3", theta0="14", ranks="2", AVALANCHE_TFOLLOW="0")
     run_ensemble(tmp_path / "one", AVALANCHE_PIECE="0", **flowing)
     said = run_ensemble(tmp_path / "two", AVALANCHE_PIECE="0.05", **flowing)
     one, two = tmp_path / "one" / "H3" / "s7", tmp_path / "two" / "H3" / "s7"
