@@ -331,11 +331,15 @@ def network_spectrum(atoms, contacts, fixed_types=(2,), dim=2):
     return np.sqrt(np.clip(w2, 0.0, None)) / (2.0 * np.pi)
 
 
+def nonzero_modes(frequencies):
+    """The frequencies above 1e-6 of the highest (the zero modes left out)."""
+    return frequencies[frequencies > 1e-6 * frequencies.max()]
+
+
 def fraction_above(frequencies, f):
-    """Fraction of the non-zero modes (above 1e-6 of the highest) with a
-    frequency above f: where a drive at f falls in the band."""
-    nonzero = frequencies[frequencies > 1e-6 * frequencies.max()]
-    return float((nonzero > f).mean())
+    """Fraction of the non-zero modes with a frequency above f: where a
+    drive at f falls in the band."""
+    return float((nonzero_modes(frequencies) > f).mean())
 
 
 # ---------------------------------------------------------------- command line
@@ -391,7 +395,7 @@ def main(argv=None):
     elif a.cmd == "spectrum":
         atoms = read_dump(a.dump)[a.frame]
         f = network_spectrum(atoms, contacts_at(a.contacts, atoms.timestep))
-        nz = f[f > 1e-6 * f.max()]
+        nz = nonzero_modes(f)
         q = np.percentile(nz, [1, 10, 50, 90, 99, 100])
         print(f"{len(f)} modes, {len(f) - len(nz)} zero; frequency percentiles 1/10/50/90/99/100: "
               + " ".join(f"{v:.4g}" for v in q))
