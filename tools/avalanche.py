@@ -16,6 +16,8 @@ computes
   theta_m     the first angle of a tilt ramp with a uniform flow;
   flow shape  mean velocity of the bottom half over that of the top half
               of the uniform flow (0.40 for Bagnold's profile, 1 for a plug);
+  sigma parts what makes sigma_1 of a dump frame: a flow uneven along the
+              slope, the velocity profile, grain-scale fluctuations;
   profile     mu*/mu and f_n of the contacts in bins of height above the
               base, at the last dump frame of an angle;
   spectrum    eigenfrequencies of the normal-spring network (paper 000 Eq. 2.9,
@@ -27,6 +29,8 @@ Units are those of the run (SI for examples/avalanche).  Command line:
     python3 tools/avalanche.py sigma   run.dump [--g 9.81]     sigma_1, sigma_2, E_k/E_t per frame
     python3 tools/avalanche.py ramp    run.series              state of each angle, theta_m, t_con,
                                                                 flow shape at theta_m
+    python3 tools/avalanche.py sigma-parts run.dump [--obs 0.3 0.7] [--dx 20] [--theta 14 14.5]
+                                                                the parts of sigma_1 at each angle
     python3 tools/avalanche.py profile run.dump run.contacts --theta 10.5 [--dz 2] [--obs 0.3 0.7]
                                                                 mu*/mu against the height
     python3 tools/avalanche.py spectrum run.dump run.contacts  frequency quantiles of the network
@@ -114,14 +118,22 @@ def energy_ratio(mass, y, vx, vy, g, yb, radius=None, omega=None):
     return ek / (ek + ep)
 
 
-def frame_observables(frame, g=9.81, grain_type=1, base_type=2, obs=(0.0, 1.0)):
-    """sigma_1, sigma_2, E_k/E_t and the angle column (if any) of one dump frame."""
+def observed_grains(frame, obs=(0.0, 1.0), grain_type=1, base_type=2):
+    """Mask of the grains in the observed x range (fractions of the box),
+    their mean diameter and the top of the base."""
     t = frame["type"]
-    grains = t == grain_type
-    yb = frame["y"][t == base_type].max() if np.any(t == base_type) else frame["y"].min()
     lo, hi = frame.box[0]
     x = frame["x"]
-    inobs = grains & (x >= lo + obs[0] * (hi - lo)) & (x < lo + obs[1] * (hi - lo))
+    inobs = (t == grain_type) & (x >= lo + obs[0] * (hi - lo)) & (x < lo + obs[1] * (hi - lo))
+    d = 2.0 * np.mean(frame["radius"][t == grain_type])
+    yb = frame["y"][t == base_type].max() if np.any(t == base_type) else frame["y"].min()
+    return inobs, d, yb
+
+
+def frame_observables(frame, g=9.81, grain_type=1, base_type=2, obs=(0.0, 1.0)):
+    """sigma_1, sigma_2, E_k/E_t and the angle column (if any) of one dump frame."""
+    grains = frame["type"] == grain_type
+    inobs, _, yb = observed_grains(frame, obs, grain_type, base_type)
     s1, s2 = sigma_layers(frame["y"][inobs], frame["vx"][inobs])
     omega = frame.columns.get("omegaz")
     radius = frame.columns.get("radius")
@@ -131,6 +143,66 @@ def frame_observables(frame, g=9.81, grain_type=1, base_type=2, obs=(0.0, 1.0)):
                          None if omega is None else omega[grains])
     theta = frame["v_th"][0] if "v_th" in frame and len(frame) else np.nan
     return {"timestep": frame.timestep, "theta": theta, "sigma1": s1, "sigma2": s2, "ratio": ratio}
+
+
+def one_hot(labels):
+    """Indicator matrix of integer labels, one column per distinct label."""
+    _, k = np.unique(labels, return_inverse=True)
+    return np.eye(k.max() + 1)[k]
+
+
+def sigma1_parts(frame, obs=(0.0, 1.0), dx=20.0, dz=1.0):
+    """What makes sigma_1 (Eq. 3.1, top half of the observed layer) of one
+    frame.  The downslope velocities of the top half are fitted by a mean
+    plus an effect of the column (dx grain diameters along the slope) plus
+    an effect of the height (dz diameters above the base), by least squares:
+
+      along     std of the column effects / mean: a flow that has not spread
+                evenly along the layer,
+      depth     std of the height effects / mean: the velocity profile,
+      residual  std of what is left / mean: grain-scale fluctuations,
+      fluct_over_shear  std of what is left / (shear rate d), the shear rate
+                being (v1 - v2) over the distance between the mean heights
+                of the top and bottom halves,
+
+    with v1, v2 the mean velocities of the top and bottom halves, sigma1
+    itself and the mean grain diameter d.  For orthogonal parts sigma1^2 = along^2 + depth^2 + residual^2."""
+    inobs, d, yb = observed_grains(frame, obs)
+    x, y, vx = frame["x"][inobs], frame["y"][inobs], frame["vx"][inobs]
+    top, bottom = layer_masks(y)
+    v1, v2 = vx[top].mean(), vx[bottom].mean()
+    column = np.floor((x[top] - x.min()) / (dx * d)).astype(int)
+    height = np.floor((y[top] - yb) / (dz * d) + 1e-9).astype(int)
+    cols, rows = one_hot(column), one_hot(height)
+    design = np.hstack([cols, rows])
+    coef = np.linalg.lstsq(design, vx[top] - v1, rcond=None)[0]
+    along = cols @ coef[:cols.shape[1]]
+    depth = rows @ coef[cols.shape[1]:]
+    residual = vx[top] - v1 - along - depth
+    shear_rate = (v1 - v2) / (y[top].mean() - y[bottom].mean())
+    return {"v1": v1, "v2": v2, "sigma1": sigma_l(vx[top]), "along": np.std(along) / abs(v1),
+            "depth": np.std(depth) / abs(v1), "residual": np.std(residual) / abs(v1),
+            "fluct_over_shear": np.std(residual) / abs(shear_rate * d), "d": d}
+
+
+SIGMA1_PARTS = ("sigma1", "along", "depth", "residual", "fluct_over_shear")
+
+
+def sigma1_parts_by_angle(frames, obs=(0.0, 1.0), dx=20.0, thetas=None):
+    """[(theta, medians of sigma1_parts over the frames at theta)] for the
+    angles of a ramp dump (or those in `thetas`), with the number of frames
+    ("frames")."""
+    by_angle = {}
+    for frame in frames:
+        theta = float(frame["v_th"][0])
+        if thetas is None or np.any(np.isclose(theta, thetas)):
+            by_angle.setdefault(theta, []).append(sigma1_parts(frame, obs, dx))
+    out = []
+    for theta, rows in sorted(by_angle.items()):
+        med = {k: float(np.median([r[k] for r in rows])) for k in rows[0]}
+        med["frames"] = len(rows)
+        out.append((theta, med))
+    return out
 
 
 def contact_heights(atoms, contacts, grain_type=1, base_type=2):
@@ -363,6 +435,13 @@ def main(argv=None):
     pr.add_argument("--theta", type=float, required=True, help="angle (deg): its last dump frame is used")
     pr.add_argument("--dz", type=float, default=2.0, help="bin height in grain diameters")
     pr.add_argument("--obs", type=float, nargs=2, default=(0.0, 1.0), help="observed x range (fractions of the box)")
+    sg = sub.add_parser("sigma-parts", help="what makes sigma_1 at each angle: flow along the slope, "
+                        "velocity profile, grain-scale fluctuations (medians over the angle's frames)")
+    sg.add_argument("dump")
+    sg.add_argument("--g", type=float, default=9.81)
+    sg.add_argument("--obs", type=float, nargs=2, default=(0.0, 1.0), help="observed x range (fractions of the box)")
+    sg.add_argument("--dx", type=float, default=20.0, help="column width along the slope, grain diameters")
+    sg.add_argument("--theta", type=float, nargs="*", default=None, help="angles to report (default: all)")
     sp = sub.add_parser("spectrum", help="eigenfrequencies of the contact network")
     sp.add_argument("dump")
     sp.add_argument("contacts")
@@ -392,6 +471,11 @@ def main(argv=None):
               f"fraction_mu*/mu<0.5 mean_f_n")
         for z0, z1, n, mu, weak, fn in friction_profile(atoms, contacts_at(a.contacts, atoms.timestep), a.dz, a.obs):
             print(f"{z0:g}-{z1:g} {n} {mu:.3f} {weak:.2f} {fn:.4g}")
+    elif a.cmd == "sigma-parts":
+        print("# theta frames v1/sqrt(gd) v2/v1 sigma1 along depth residual fluct/(shear_rate d)")
+        for theta, parts in sigma1_parts_by_angle(read_dump(a.dump), a.obs, a.dx, a.theta):
+            print(f"{theta:5.2f} {parts['frames']} {parts['v1'] / np.sqrt(a.g * parts['d']):.3f} "
+                  f"{parts['v2'] / parts['v1']:.3f} " + " ".join(f"{parts[k]:.3f}" for k in SIGMA1_PARTS))
     elif a.cmd == "spectrum":
         atoms = read_dump(a.dump)[a.frame]
         f = network_spectrum(atoms, contacts_at(a.contacts, atoms.timestep))

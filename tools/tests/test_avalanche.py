@@ -10,13 +10,13 @@ from lammps_output import Snapshot, read_dump
 DT = 1e-3
 
 
-def lammps_dump_text(frames, item, columns):
+def lammps_dump_text(frames, item, columns, xhi=10):
     """A LAMMPS text dump of (timestep, rows) frames: item ATOMS (dump custom)
-    or ENTRIES (dump local), box 0 10 x -1 10 x -0.5 0.5."""
+    or ENTRIES (dump local), box 0 xhi x -1 10 x -0.5 0.5."""
     out = []
     for step, rows in frames:
         out += ["ITEM: TIMESTEP", str(step), f"ITEM: NUMBER OF {item}", str(len(rows)),
-                "ITEM: BOX BOUNDS pp fm pp", "0 10", "-1 10", "-0.5 0.5", f"ITEM: {item} {columns}"]
+                "ITEM: BOX BOUNDS pp fm pp", f"0 {xhi}", "-1 10", "-0.5 0.5", f"ITEM: {item} {columns}"]
         out += [" ".join(f"{v:g}" for v in r) for r in rows]
     return "\n".join(out) + "\n"
 
@@ -225,6 +225,55 @@ def test_ramp_and_theta_m(tmp_path):
     tm, tc = av.theta_m(res)
     assert tm == 11.0 and tc == pytest.approx(0.020)
     assert math.isnan(av.theta_m(res[:2])[0])
+
+
+def sheared_layer(a, b, e, theta=12.0):
+    """Grains of diameter 1 on a 40 x 6 grid (x = 0.5 ... 39.5, y = 1 ... 6)
+    over base grains at y = 0, box 0-40: vx = 1 + a (-1 for x < 20, +1
+    beyond) + b (y - 5) + e (+1 / -1 alternating along x).  In the top half
+    (y = 4, 5, 6) the mean is 1 and the three parts are orthogonal."""
+    x, y = np.meshgrid(np.arange(40) + 0.5, np.arange(1, 7))
+    x, y = x.ravel(), y.ravel()
+    vx = 1 + a * np.where(x < 20, -1, 1) + b * (y - 5) + e * np.where(np.floor(x) % 2 == 0, 1, -1)
+    n = len(x)
+    cols = {"id": np.arange(1, n + 3), "type": np.r_[np.ones(n), 2, 2], "radius": np.full(n + 2, 0.5),
+            "mass": np.ones(n + 2), "x": np.r_[x, 1, 3], "y": np.r_[y, 0, 0], "vx": np.r_[vx, 0, 0],
+            "vy": np.zeros(n + 2), "v_th": np.full(n + 2, theta)}
+    return Snapshot(0, np.array([[0, 40], [-1, 10], [-0.5, 0.5]], float), cols)
+
+
+def test_sigma1_parts_of_a_known_layer():
+    a, b, e = 0.2, 0.1, 0.15
+    p = av.sigma1_parts(sheared_layer(a, b, e))
+    assert p["v1"] == pytest.approx(1.0)
+    assert p["v2"] == pytest.approx(1 - 3 * b)                   # y = 1, 2, 3: mean y - 5 = -3
+    assert p["along"] == pytest.approx(a)
+    assert p["depth"] == pytest.approx(b * math.sqrt(2 / 3))      # b (y - 5) over y = 4, 5, 6
+    assert p["residual"] == pytest.approx(e)
+    assert p["sigma1"] == pytest.approx(math.sqrt(a * a + 2 * b * b / 3 + e * e))
+    assert p["fluct_over_shear"] == pytest.approx(e / b)          # shear rate 3 b over 3 d
+    assert p["d"] == pytest.approx(1.0)
+    # the observed window x < 20 holds one column: nothing along the slope
+    p = av.sigma1_parts(sheared_layer(a, b, e), obs=(0.0, 0.5))
+    assert p["along"] == pytest.approx(0.0, abs=1e-12)
+    assert p["residual"] == pytest.approx(e / (1 - a))
+
+
+def test_sigma1_parts_by_angle_takes_medians(capsys, tmp_path):
+    frames = [sheared_layer(0.2, 0.1, e, theta) for e, theta in ((0.1, 12), (0.3, 12), (0.2, 12), (0.05, 13))]
+    rows = av.sigma1_parts_by_angle(frames)
+    assert [(t, p["frames"]) for t, p in rows] == [(12.0, 3), (13.0, 1)]
+    assert rows[0][1]["residual"] == pytest.approx(0.2)
+    assert av.sigma1_parts_by_angle(frames, thetas=[13.0])[0][1]["residual"] == pytest.approx(0.05)
+    # the command line, from a dump file: v1 / sqrt(g d) = 1 / sqrt(4) with g = 4
+    path = tmp_path / "run.dump"
+    names = list(frames[0].columns)
+    path.write_text(lammps_dump_text([(k, np.column_stack([f[c] for c in names]))
+                                      for k, f in enumerate(frames)], "ATOMS", " ".join(names), xhi=40))
+    assert av.main(["sigma-parts", str(path), "--g", "4", "--theta", "13"]) == 0
+    out = [line.split() for line in capsys.readouterr().out.splitlines() if not line.startswith("#")]
+    assert out == [["13.00", "1", "0.500", "0.700", f"{math.sqrt(0.04 + 0.02 / 3 + 0.0025):.3f}",
+                    "0.200", "0.082", "0.050", "0.500"]]
 
 
 def test_bottom_to_top_velocity_of_the_last_samples():
