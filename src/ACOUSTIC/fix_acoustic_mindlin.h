@@ -70,10 +70,11 @@ class FixAcousticMindlin : public Fix {
     TIME_FACTORISATION,    // ... symbolic analysis and numeric factorisation
     TIME_SOLVE,            // ... rest of the solve (triangular solves, residual)
     TIME_UPDATE,           // ... scatter of the amplitudes and friction update
-    NANALYSES,             // symbolic analyses since the fix was defined
-    NFACTORISATIONS,       // numeric factorisations since the fix was defined
+    // the counts and the total time go on from a restart file's values
+    NANALYSES,             // symbolic analyses since the fix was first defined
+    NFACTORISATIONS,       // numeric factorisations since then
     NREUSES,               // solves done with earlier factors (BiCGSTAB) since then
-    TIME_TOTAL,            // wall time of all updates since the fix was defined
+    TIME_TOTAL,            // wall time of all updates since then
     NVECTOR
   };
 
