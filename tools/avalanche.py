@@ -29,7 +29,7 @@ Units are those of the run (SI for examples/avalanche).  Command line:
     python3 tools/avalanche.py sigma   run.dump [--g 9.81]     sigma_1, sigma_2, E_k/E_t per frame
     python3 tools/avalanche.py ramp    run.series              state of each angle, theta_m, t_con,
                                                                 flow shape at theta_m
-    python3 tools/avalanche.py sigma-parts run.dump [--obs 0.3 0.7] [--dx 20] [--theta 14 14.5]
+    python3 tools/avalanche.py sigma-parts run.dump [--obs 0.3 0.7] [--dx 20] [--theta 14 14.5] [--per-frame]
                                                                 the parts of sigma_1 at each angle
     python3 tools/avalanche.py profile run.dump run.contacts --theta 10.5 [--dz 2] [--obs 0.3 0.7]
                                                                 mu*/mu against the height
@@ -442,6 +442,8 @@ def main(argv=None):
     sg.add_argument("--obs", type=float, nargs=2, default=(0.0, 1.0), help="observed x range (fractions of the box)")
     sg.add_argument("--dx", type=float, default=20.0, help="column width along the slope, grain diameters")
     sg.add_argument("--theta", type=float, nargs="*", default=None, help="angles to report (default: all)")
+    sg.add_argument("--per-frame", action="store_true", help="one line per dump frame (first column the "
+                    "timestep) instead of the medians of each angle")
     sp = sub.add_parser("spectrum", help="eigenfrequencies of the contact network")
     sp.add_argument("dump")
     sp.add_argument("contacts")
@@ -472,10 +474,20 @@ def main(argv=None):
         for z0, z1, n, mu, weak, fn in friction_profile(atoms, contacts_at(a.contacts, atoms.timestep), a.dz, a.obs):
             print(f"{z0:g}-{z1:g} {n} {mu:.3f} {weak:.2f} {fn:.4g}")
     elif a.cmd == "sigma-parts":
-        print("# theta frames v1/sqrt(gd) v2/v1 sigma1 along depth residual fluct/(shear_rate d)")
-        for theta, parts in sigma1_parts_by_angle(read_dump(a.dump), a.obs, a.dx, a.theta):
-            print(f"{theta:5.2f} {parts['frames']} {parts['v1'] / np.sqrt(a.g * parts['d']):.3f} "
-                  f"{parts['v2'] / parts['v1']:.3f} " + " ".join(f"{parts[k]:.3f}" for k in SIGMA1_PARTS))
+        def line(first, theta, parts):
+            return (f"{first} {theta:5.2f} {parts['v1'] / np.sqrt(a.g * parts['d']):.3f} "
+                    f"{parts['v2'] / parts['v1']:.3f} " + " ".join(f"{parts[k]:.3f}" for k in SIGMA1_PARTS))
+        frames = read_dump(a.dump)
+        print(f"# {'timestep' if a.per_frame else 'frames'} theta v1/sqrt(gd) v2/v1 sigma1 along depth "
+              "residual fluct/(shear_rate d)")
+        if a.per_frame:
+            for frame in frames:
+                theta = float(frame["v_th"][0])
+                if a.theta is None or np.any(np.isclose(theta, a.theta)):
+                    print(line(frame.timestep, theta, sigma1_parts(frame, a.obs, a.dx)))
+        else:
+            for theta, parts in sigma1_parts_by_angle(frames, a.obs, a.dx, a.theta):
+                print(line(parts["frames"], theta, parts))
     elif a.cmd == "spectrum":
         atoms = read_dump(a.dump)[a.frame]
         f = network_spectrum(atoms, contacts_at(a.contacts, atoms.timestep))

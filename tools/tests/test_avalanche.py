@@ -272,8 +272,13 @@ def test_sigma1_parts_by_angle_takes_medians(capsys, tmp_path):
                                       for k, f in enumerate(frames)], "ATOMS", " ".join(names), xhi=40))
     assert av.main(["sigma-parts", str(path), "--g", "4", "--theta", "13"]) == 0
     out = [line.split() for line in capsys.readouterr().out.splitlines() if not line.startswith("#")]
-    assert out == [["13.00", "1", "0.500", "0.700", f"{math.sqrt(0.04 + 0.02 / 3 + 0.0025):.3f}",
+    assert out == [["1", "13.00", "0.500", "0.700", f"{math.sqrt(0.04 + 0.02 / 3 + 0.0025):.3f}",
                     "0.200", "0.082", "0.050", "0.500"]]
+    # one line per frame: the three frames at 12 deg, residuals 0.1, 0.3, 0.2 (timesteps 0, 1, 2)
+    assert av.main(["sigma-parts", str(path), "--theta", "12", "--per-frame"]) == 0
+    out = [line.split() for line in capsys.readouterr().out.splitlines() if not line.startswith("#")]
+    assert [(r[0], r[1], r[7]) for r in out] == [("0", "12.00", "0.100"), ("1", "12.00", "0.300"),
+                                                 ("2", "12.00", "0.200")]
 
 
 def test_bottom_to_top_velocity_of_the_last_samples():
