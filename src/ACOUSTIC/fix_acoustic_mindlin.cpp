@@ -52,7 +52,7 @@ static const char CMD[] = "fix acoustic/mindlin";
 FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), source_groupbit(0), source_wall(-1), direction_axis(-1), direction_given(false), source_mode(ALL),
     solver_choice(Acoustic::LinearSolverChoice::Auto), reuse(false), ndof(0), damped(0), last_update(-1),
-    atoms_at_end(0), q_atom(nullptr), amplitude_atom(nullptr), contact_array(nullptr),
+    atoms_at_end(0), q_atom(nullptr), q_restored(false), amplitude_atom(nullptr), contact_array(nullptr),
     ncontact_rows(0), maxcontact_rows(0)
 {
   if (narg < 10)
@@ -127,6 +127,8 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
   // amplitudes, continue in a run restarted from a restart file
   restart_global = 1;
   restart_peratom = 1;
+  // an atom moving to another processor takes its amplitudes along
+  maxexchange = size_peratom_cols + 2 * ndof;
 
   network.reset(new VibrationNetwork(lmp, settings, CMD));
   // collective.  solver mumps: every rank takes part in the factorisation
@@ -355,6 +357,15 @@ void FixAcousticMindlin::setup_pre_force(int /*vflag*/)
     return;
   }
   network->collect(groupbit);
+  // restarted at the step of its last update: the local rows of that update,
+  // from the DOF amplitudes of the restart file (the factors stay as they are)
+  int restored = q_restored ? 1 : 0, any_restored = 0;
+  MPI_Allreduce(&restored, &any_restored, 1, MPI_INT, MPI_MAX, world);
+  q_restored = false;
+  if (any_restored && last_update == update->ntimestep) {
+    comm->forward_comm(this);
+    evaluate_contacts(false);
+  }
   factor_statistics(network->local_contacts());
 }
 
@@ -473,7 +484,7 @@ void FixAcousticMindlin::update_factors()
   const double t1 = MPI_Wtime();
   if (solved) {
     set_amplitudes();
-    set_factors();
+    evaluate_contacts(true);
   }
   factor_statistics(network->local_contacts());
   const double t2 = MPI_Wtime();
@@ -511,11 +522,13 @@ void FixAcousticMindlin::set_amplitudes()
 }
 
 /* ----------------------------------------------------------------------
-   the friction factor of each contact from the vibration of its contact
-   point, into the contact history; one local output row per contact
+   the tangential amplitude of each contact from the DOF amplitudes
+   (q_atom, owned and ghost atoms) and one local output row per contact;
+   set_factors: the friction factor from that amplitude, into the contact
+   history; else the rows show the factors already in the histories
 ------------------------------------------------------------------------- */
 
-void FixAcousticMindlin::set_factors()
+void FixAcousticMindlin::evaluate_contacts(bool set_factors)
 {
   const auto &contacts = network->local_contacts();
   tagint *tag = atom->tag;
@@ -547,7 +560,7 @@ void FixAcousticMindlin::set_factors()
         const Eigen::Vector3cd delta = Acoustic::contact_point_displacement(
             dim, settings.model, n, flip ? c.radj : c.radi, flip ? c.radi : c.radj, qi, qj);
         ut = Acoustic::tangential_amplitude(delta, n, amplitude);
-        s = Acoustic::friction_factor(law, c.kt, ut, c.mu, c.fncrit);
+        if (set_factors) s = Acoustic::friction_factor(law, c.kt, ut, c.mu, c.fncrit);
       } catch (Acoustic::SolverError &e) {
         errors.report(fmt::format("{}: contact of atoms {} and {}: {}", CMD, tag[c.i], tag[c.j],
                                   e.what()));
@@ -555,8 +568,9 @@ void FixAcousticMindlin::set_factors()
       }
     }
     // a wall contact whose tangential model has no /acoustic variant keeps its friction
-    if (c.factor) GranularContactWalker::set_friction_factor(c.factor, s);
-    else s = 1.0;
+    if (!c.factor) s = 1.0;
+    else if (set_factors) GranularContactWalker::set_friction_factor(c.factor, s);
+    else s = GranularContactWalker::friction_factor(c.factor);
     if (!c.owned) continue;
     double *row = contact_array[ncontact_rows++];
     row[0] = static_cast<double>(tag[c.i]);
@@ -668,6 +682,7 @@ int FixAcousticMindlin::pack_exchange(int i, double *buf)
 {
   int m = 0;
   for (int k = 0; k < size_peratom_cols; k++) buf[m++] = amplitude_atom[i][k];
+  for (int k = 0; k < 2 * ndof; k++) buf[m++] = q_atom[i][k];
   return m;
 }
 
@@ -675,18 +690,20 @@ int FixAcousticMindlin::unpack_exchange(int nlocal, double *buf)
 {
   int m = 0;
   for (int k = 0; k < size_peratom_cols; k++) amplitude_atom[nlocal][k] = buf[m++];
-  for (int k = 0; k < 2 * ndof; k++) q_atom[nlocal][k] = 0.0;
+  for (int k = 0; k < 2 * ndof; k++) q_atom[nlocal][k] = buf[m++];
   return m;
 }
 
 /* ----------------------------------------------------------------------
-   per-atom restart state: the amplitudes of the last update
+   per-atom restart state: the output amplitudes and the DOF amplitudes
+   of the last update
 ------------------------------------------------------------------------- */
 
 int FixAcousticMindlin::pack_restart(int i, double *buf)
 {
   int m = 1;
   for (int k = 0; k < size_peratom_cols; k++) buf[m++] = amplitude_atom[i][k];
+  for (int k = 0; k < 2 * ndof; k++) buf[m++] = q_atom[i][k];
   // pack buf[0] this way because other fixes unpack it
   buf[0] = m;
   return m;
@@ -699,19 +716,22 @@ void FixAcousticMindlin::unpack_restart(int nlocal, int nth)
   // because other fixes pack them
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
+  const int count = static_cast<int>(extra[nlocal][m++]);
   for (int k = 0; k < size_peratom_cols; k++) amplitude_atom[nlocal][k] = extra[nlocal][m++];
-  for (int k = 0; k < 2 * ndof; k++) q_atom[nlocal][k] = 0.0;
+  // restart files written before the DOF amplitudes were stored hold none
+  const bool with_q = (count == size_restart(nlocal));
+  for (int k = 0; k < 2 * ndof; k++) q_atom[nlocal][k] = with_q ? extra[nlocal][m++] : 0.0;
+  if (with_q) q_restored = true;
 }
 
 int FixAcousticMindlin::size_restart(int /*nlocal*/)
 {
-  return size_peratom_cols + 1;
+  return 1 + size_peratom_cols + 2 * ndof;
 }
 
 int FixAcousticMindlin::maxsize_restart()
 {
-  return size_peratom_cols + 1;
+  return 1 + size_peratom_cols + 2 * ndof;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -102,6 +102,7 @@ class FixAcousticMindlin : public Fix {
   std::uint64_t atoms_at_end;   // fingerprint of the atoms at the end of the last run
 
   double **q_atom;            // complex DOF amplitudes per atom, (re, im) pairs
+  bool q_restored;            // q_atom of this process's atoms came from a restart file
   double **amplitude_atom;    // per-atom output: translational amplitudes
   double **contact_array;     // local output: one row per contact
   int ncontact_rows, maxcontact_rows;
@@ -117,7 +118,7 @@ class FixAcousticMindlin : public Fix {
   void update_factors();
   bool solve_drive(std::string &failure);
   void set_amplitudes();
-  void set_factors();
+  void evaluate_contacts(bool set_factors);
   void factor_statistics(const std::vector<GranularContact> &contacts);
   std::uint64_t atoms_fingerprint() const;
 };
