@@ -28,7 +28,8 @@ Units are those of the run (SI for examples/avalanche).  Command line:
 
     python3 tools/avalanche.py sigma   run.dump [--g 9.81]     sigma_1, sigma_2, E_k/E_t per frame
     python3 tools/avalanche.py ramp    run.series              state of each angle, theta_m, t_con,
-                                                                flow shape at theta_m
+                                                                flow shape at theta_m, sigma_1 of
+                                                                the spreading flows
     python3 tools/avalanche.py sigma-parts run.dump [--obs 0.3 0.7] [--dx 20] [--theta 14 14.5] [--per-frame]
                                                                 the parts of sigma_1 at each angle
     python3 tools/avalanche.py profile run.dump run.contacts --theta 10.5 [--dz 2] [--obs 0.3 0.7]
@@ -362,6 +363,17 @@ def bottom_to_top_velocity(series, theta, nsamples=10):
     return float(np.mean(series["vx2"][idx]) / np.mean(series["vx1"][idx]))
 
 
+def sigma1_spread(series, theta, fspread=0.5):
+    """(median, 10th percentile) of sigma_1 over the samples at angle `theta`
+    in which more than fspread of the grains are mobile (nan if none): how
+    far a spreading flow is from the criterion, and how deep it dips."""
+    idx = np.flatnonzero(np.isclose(series["theta"], theta) & (series["mobile"] > fspread))
+    if idx.size == 0:
+        return np.nan, np.nan
+    values = series["sigma1"][idx]
+    return float(np.median(values)), float(np.percentile(values, 10))
+
+
 def t_con(time, sigma1, sigma2, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, hold=1):
     """First time from which sigma_1 < eps1 and sigma_2 < eps2 hold for `hold` samples."""
     n = runs_of((np.asarray(sigma1) < eps1) & (np.asarray(sigma2) < eps2))
@@ -460,8 +472,11 @@ def main(argv=None):
         series = read_series(a.series)
         res = ramp_results(series, first_theta=a.theta0, eps_e=a.epsE, tfollow=a.tfollow)
         for x in res:
+            spread = ""
+            if x.state in ("partial", "uniform"):
+                spread = "  sigma1 median {:.3f}, 10th percentile {:.3f}".format(*sigma1_spread(series, x.theta))
             print(f"theta {x.theta:5.2f}  {x.state:8s} after {x.duration:.3f} s  max Ek/Et {x.max_ratio:.2e}"
-                  + (f"  t_con {x.t_con:.3f} s" if x.state == "uniform" else ""))
+                  + (f"  t_con {x.t_con:.3f} s" if x.state == "uniform" else "") + spread)
         tm, tc = theta_m(res)
         print(f"theta_m = {tm:g} deg  t_con = {tc:.3f} s")
         if np.isfinite(tm):

@@ -227,6 +227,16 @@ def test_ramp_and_theta_m(tmp_path):
     assert math.isnan(av.theta_m(res[:2])[0])
 
 
+def test_sigma1_spread_of_the_spreading_samples():
+    # at 12 deg: sigma_1 = 0.1 ... 1.0 in mobile samples, 5.0 in still ones (left out)
+    sigma1 = np.r_[np.linspace(0.1, 1.0, 10), np.full(5, 5.0), [0.7]]
+    series = {"theta": np.r_[np.full(15, 12.0), [12.5]], "sigma1": sigma1,
+              "mobile": np.r_[np.full(10, 0.9), np.zeros(5), [0.2]]}
+    median, p10 = av.sigma1_spread(series, 12.0)
+    assert median == pytest.approx(0.55) and p10 == pytest.approx(0.19)
+    assert all(math.isnan(v) for v in av.sigma1_spread(series, 12.5))    # nothing spread there
+
+
 def sheared_layer(a, b, e, theta=12.0):
     """Grains of diameter 1 on a 40 x 6 grid (x = 0.5 ... 39.5, y = 1 ... 6)
     over base grains at y = 0, box 0-40: vx = 1 + a (-1 for x < 20, +1
