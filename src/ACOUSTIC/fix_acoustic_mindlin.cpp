@@ -352,6 +352,9 @@ bool FixAcousticMindlin::factors_are_current() const
 
 void FixAcousticMindlin::setup_pre_force(int /*vflag*/)
 {
+  // the DOF amplitudes of a restart file serve the first setup after it only
+  int restored = q_restored ? 1 : 0, any_restored = 0;
+  q_restored = false;
   if (!factors_are_current()) {
     update_factors();
     return;
@@ -359,9 +362,7 @@ void FixAcousticMindlin::setup_pre_force(int /*vflag*/)
   network->collect(groupbit);
   // restarted at the step of its last update: the local rows of that update,
   // from the DOF amplitudes of the restart file (the factors stay as they are)
-  int restored = q_restored ? 1 : 0, any_restored = 0;
   MPI_Allreduce(&restored, &any_restored, 1, MPI_INT, MPI_MAX, world);
-  q_restored = false;
   if (any_restored && last_update == update->ntimestep) {
     comm->forward_comm(this);
     evaluate_contacts(false);
