@@ -3,8 +3,9 @@
 
     /usr/bin/python3 examples/avalanche/collect.py [OUT_DIR] [FIG_DIR]
 
-OUT_DIR (default examples/avalanche/out) holds ensemble_periodic/H<H>/s<seed>/
-and ensemble/H<H>/s<seed>/ (free ends, 400 d), each with log.deposit, log.f0,
+OUT_DIR (default examples/avalanche/out) holds ensemble_periodic/H<H>/s<seed>/,
+ensemble/H<H>/s<seed>/ (free ends, 400 d) and ensemble_L<length>/H<H>/s<seed>/
+(free ends of another length), each with log.deposit, log.f0,
 log.f70 and the t_con runs log.tcon_f*_<theta>.  Prints markdown tables:
 packings, theta_m(H/d) per geometry with means and standard deviations, the
 fitted slope of theta_m(H/d) with its standard error, the 70 kHz shift (paired
@@ -40,6 +41,19 @@ PAPER_TCON_H6_19DEG = (1.15, 0.30)
 
 RESULT = re.compile(r"theta_m = ([0-9.]+|none) deg\s+t_con = ([-0-9.]+) s")
 GEOMETRIES = (("ensemble_periodic", "periodic"), ("ensemble", "free ends, 400 d"))
+PAPER_TCON_ANGLE_H6 = 19.0
+
+
+def geometries(top):
+    """(directory, label) of the ensembles in top: the periodic set, the
+    free-ends set (400 d) and the free-ends sets of other lengths
+    (ensemble_L<length>, run_ensemble.sh with AVALANCHE_LAYER), in this order."""
+    other = []
+    for d in glob.glob(os.path.join(top, "ensemble_L*")):
+        m = re.fullmatch(r"ensemble_L([0-9]+)", os.path.basename(d))
+        if m:
+            other.append((int(m.group(1)), f"free ends, {m.group(1)} d", os.path.basename(d)))
+    return list(GEOMETRIES) + [(sub, label) for _, label, sub in sorted(other)]
 
 
 def result(log):
@@ -105,7 +119,7 @@ def other_frequencies(path):
 def ensembles(top):
     """{geometry label: {H: [packings]}} for the geometries present."""
     out = {}
-    for sub, label in GEOMETRIES:
+    for sub, label in geometries(top):
         by_h = {}
         for d in sorted(glob.glob(os.path.join(top, sub, "H*"))):
             H = float(os.path.basename(d)[1:])
@@ -170,6 +184,13 @@ def tcon_one_degree_above(packs, tag):
     packing's theta_m (paper 000 Fig. 8's first angle above theta_m); a run
     that never became uniform is not counted."""
     return mean_sd([t for p in packs for th, t in p[f"tcon_{tag}"] if th == p[tag][0] + 1.0])
+
+
+def tcon_at_angle(packs, tag, theta):
+    """(mean, s.d., count) of t_con in the runs at the angle theta (paper 000
+    gives t_con at 19 deg for H = 6 d); a run that never became uniform is
+    not counted."""
+    return mean_sd([t for p in packs for th, t in p[f"tcon_{tag}"] if th == theta])
 
 
 def slope(points):
@@ -276,6 +297,12 @@ def print_tables(all_ens, summary):
             for H in sorted({h for h, *_ in tc}):
                 m0, m70 = (tcon_one_degree_above(by_h[H], tag) for tag in ("f0", "f70"))
                 print(f"- H = {H:g} d: 0 kHz {fmt(m0)} s ({m0[2]}), 70 kHz {fmt(m70)} s ({m70[2]})")
+            if 6.0 in by_h:
+                a = PAPER_TCON_ANGLE_H6
+                m0, m70 = (tcon_at_angle(by_h[6.0], tag, a) for tag in ("f0", "f70"))
+                print(f"\nt_con at {a:g}° and H = 6 d, mean ± s.d. (runs): 0 kHz {fmt(m0)} s ({m0[2]}), "
+                      f"70 kHz {fmt(m70)} s ({m70[2]}); paper 000 {PAPER_TCON_H6_19DEG[0]:g} / "
+                      f"{PAPER_TCON_H6_19DEG[1]:g} s")
 
 
 def thetam_table(rows, path):
@@ -322,7 +349,8 @@ def figures(all_ens, summary, top, figdir):
     table8 = os.path.join(top, "tcon.txt")
     with open(table8, "w") as f:
         f.writelines(tcon_table_lines(all_ens, label, free))
-        f.write(f"paper000_H6_0kHz 19 {PAPER_TCON_H6_19DEG[0]}\npaper000_H6_70kHz 19 {PAPER_TCON_H6_19DEG[1]}\n")
+        a = PAPER_TCON_ANGLE_H6
+        f.write(f"paper000_H6_0kHz {a:g} {PAPER_TCON_H6_19DEG[0]}\npaper000_H6_70kHz {a:g} {PAPER_TCON_H6_19DEG[1]}\n")
     if os.path.getsize(table8):
         figs.main(["tcon", table8, "-o", os.path.join(figdir, "fig8_tcon.png"), "--dpi", "80"])
     for H in (6.0, 14.4):

@@ -19,7 +19,8 @@
 #   e.g. run_ensemble.sh build 3 1 0 3 1 70e3      (H = 3 d, packing 1, both ramps)
 # Environment: AVALANCHE_FREE (1: free ends, default; 0: periodic),
 #   AVALANCHE_LAYER (layer length in d, default 400 with free ends, 80 periodic),
-#   AVALANCHE_OUT (default examples/avalanche/out/ensemble), AVALANCHE_NP (2),
+#   AVALANCHE_OUT (default examples/avalanche/out/ensemble, ensemble_periodic, or
+#   ensemble_L<LAYER> for free ends not 400 d long), AVALANCHE_NP (2),
 #   AVALANCHE_SOURCE (bottom: paper 000's source, default; base: the rough base),
 #   AVALANCHE_KAPPA (kappa_scale of the vibration network, default 0.3),
 #   AVALANCHE_TFOLLOW (s, default 1.2 as paper 000), AVALANCHE_TSETTLE (s, 0.5),
@@ -56,7 +57,10 @@ kappa=${AVALANCHE_KAPPA:-0.3}                 # kappa_scale (calibrate.py, RESUL
 source=${AVALANCHE_SOURCE:-bottom}
 tfollow=${AVALANCHE_TFOLLOW:-1.2}
 tsettle=${AVALANCHE_TSETTLE:-0.5}
-top=${AVALANCHE_OUT:-$here/out/ensemble$([ "$free" = 1 ] || echo _periodic)}
+if [ "$free" != 1 ]; then geometry=ensemble_periodic
+elif [ "$layer" = 400 ]; then geometry=ensemble
+else geometry=ensemble_L$layer; fi            # a layer-length test beside the 400 d set
+top=${AVALANCHE_OUT:-$here/out/$geometry}
 mkdir -p "$top"; top=$(cd "$top" && pwd)
 if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 mpi=(mpirun -np "${AVALANCHE_NP:-2}")

@@ -162,3 +162,24 @@ def test_ramps_at_other_frequencies_beside_the_packing(collect, out, capsys):
     assert capsys.readouterr().out.strip().splitlines()[-1] == (
         "- H = 6 d s1, 60 kHz: 18.5°, 0.25 s, 13°, 0.35; 0 / 70 kHz: θ_m 18.5 / 14.5°, "
         "first spreading flow 18.5 / 14.5°")
+
+
+def test_layers_of_another_length_beside_the_400_d_set(collect, tmp_path, capsys):
+    # free ends 400 d (ensemble) and 800 d (ensemble_L800, run_ensemble.sh
+    # with AVALANCHE_LAYER=800): two geometries, the 400 d set first, so that
+    # the figures keep drawing it; t_con at 19 deg at H = 6 d is averaged per
+    # geometry (0.4 and 0.6 s at 800 d; a run at 20 deg is not counted)
+    a = packing(tmp_path, "ensemble", 6, 1, 6.0, ([(18, "uniform")], 18, 0.5), ([(15, "uniform")], 15, 0.2))
+    ramp(a, "tcon_f0_19.0", [], 19.0, 0.3)
+    for seed, t in ((1, 0.4), (2, 0.6)):
+        b = packing(tmp_path, "ensemble_L800", 6, seed, 6.0, ([(18, "uniform")], 18, 0.9),
+                    ([(15, "uniform")], 15, 0.2))
+        ramp(b, "tcon_f0_19.0", [], 19.0, t)
+    ramp(b, "tcon_f0_20.0", [], 20.0, 0.1)
+    all_ens = collect.ensembles(str(tmp_path))
+    assert list(all_ens) == ["free ends, 400 d", "free ends, 800 d"]
+    m, s, n = collect.tcon_at_angle(all_ens["free ends, 800 d"][6.0], "f0", 19.0)
+    assert (m, n) == (pytest.approx(0.5), 2) and s == pytest.approx(np.sqrt(0.02))
+    collect.print_tables(all_ens, {k: collect.summarise(v) for k, v in all_ens.items()})
+    text = capsys.readouterr().out.split("### free ends, 800 d")[1]
+    assert "t_con at 19° and H = 6 d, mean ± s.d. (runs): 0 kHz 0.50 ± 0.14 s (2), 70 kHz — s (0)" in text

@@ -25,8 +25,8 @@ RAMP = [
 ]
 
 
-def packing(top, seed, f70_finished):
-    d = top / "ensemble" / "H6" / f"s{seed}"
+def packing(top, seed, f70_finished, geometry="ensemble"):
+    d = top / geometry / "H6" / f"s{seed}"
     os.makedirs(d)
     (d / "log.deposit").write_text("LAMMPS (4 Feb 2025)\n" + DEPOSIT + "Total wall time: 0:00:30\n")
     (d / "log.f0").write_text("".join(RAMP))
@@ -89,3 +89,15 @@ def test_deposit_under_way_left_out(record, tmp_path):
     (d / "log.deposit").write_text("LAMMPS (4 Feb 2025)\n  Step Time\n")
     assert record.record(str(out), str(rec)) == 1
     assert os.listdir(rec / "ensemble" / "H6" / "s1") == ["log.f0"]
+
+
+def test_layers_of_another_length_recorded(record, collect, tmp_path):
+    # run_ensemble.sh with AVALANCHE_LAYER=800 writes out/ensemble_L800: its
+    # logs and jobs are recorded as those of the 400 d set
+    out, rec = tmp_path / "out", tmp_path / "rec"
+    packing(out, 1, f70_finished=True, geometry="ensemble_L800")
+    (out / "ensemble_L800" / "jobs.txt").write_text("H6 s1 f0: theta_m = 18.50 deg  layer 800 d\n")
+    assert record.record(str(out), str(rec)) == 3
+    assert sorted(os.listdir(rec / "ensemble_L800" / "H6" / "s1")) == ["log.deposit", "log.f0", "log.f70"]
+    assert (rec / "ensemble_L800" / "jobs.txt").exists()
+    assert collect.ensembles(str(rec))["free ends, 800 d"][6.0][0]["f0"] == (18.5, 0.25)
