@@ -99,5 +99,5 @@ def test_layers_of_another_length_recorded(record, collect, tmp_path):
     (out / "ensemble_L800" / "jobs.txt").write_text("H6 s1 f0: theta_m = 18.50 deg  layer 800 d\n")
     assert record.record(str(out), str(rec)) == 3
     assert sorted(os.listdir(rec / "ensemble_L800" / "H6" / "s1")) == ["log.deposit", "log.f0", "log.f70"]
-    assert (rec / "ensemble_L800" / "jobs.txt").exists()
+    assert (rec / "ensemble_L800" / "jobs.txt").read_text() == (out / "ensemble_L800" / "jobs.txt").read_text()
     assert collect.ensembles(str(rec))["free ends, 800 d"][6.0][0]["f0"] == (18.5, 0.25)
