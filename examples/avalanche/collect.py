@@ -4,8 +4,9 @@
     /usr/bin/python3 examples/avalanche/collect.py [OUT_DIR] [FIG_DIR]
 
 OUT_DIR (default examples/avalanche/out) holds ensemble_periodic/H<H>/s<seed>/,
-ensemble/H<H>/s<seed>/ (free ends, 400 d) and ensemble_L<length>/H<H>/s<seed>/
-(free ends of another length), each with log.deposit, log.f0,
+ensemble/H<H>/s<seed>/ (free ends, 400 d), ensemble_L<length>/H<H>/s<seed>/
+(free ends of another length) and ensemble_E<modulus>/... (another contact
+law; AVALANCHE_EDEM of run_ensemble.sh), each with log.deposit, log.f0,
 log.f70 and the t_con runs log.tcon_f*_<theta>.  Prints markdown tables:
 packings, theta_m(H/d) per geometry with means and standard deviations, the
 fitted slope of theta_m(H/d) with its standard error, the 70 kHz shift (paired
@@ -46,13 +47,21 @@ PAPER_TCON_ANGLE_H6 = 19.0
 
 def geometries(top):
     """(directory, label) of the ensembles in top: the periodic set, the
-    free-ends set (400 d) and the free-ends sets of other lengths
-    (ensemble_L<length>, run_ensemble.sh with AVALANCHE_LAYER), in this order."""
+    free-ends set (400 d), then the free-ends sets of other lengths
+    (ensemble_L<length>, run_ensemble.sh with AVALANCHE_LAYER) or another
+    contact law (..._E<modulus>_e<restitution>, AVALANCHE_EDEM and
+    AVALANCHE_REST), by length and modulus."""
     other = []
-    for d in glob.glob(os.path.join(top, "ensemble_L*")):
-        m = re.fullmatch(r"ensemble_L([0-9]+)", os.path.basename(d))
-        if m:
-            other.append((int(m.group(1)), f"free ends, {m.group(1)} d", os.path.basename(d)))
+    for d in glob.glob(os.path.join(top, "ensemble_*")):
+        m = re.fullmatch(r"ensemble(?:_L([0-9]+))?(?:_E([0-9.e+]+))?(?:_e([0-9.]+))?", os.path.basename(d))
+        if not m or not any(m.groups()):
+            continue
+        length, modulus, restitution = m.groups()
+        label = f"free ends, {length or 400} d"
+        label += f", E = {float(modulus):g} Pa" if modulus else ""
+        label += f", restitution {restitution}" if restitution else ""
+        key = (int(length or 400), float(modulus or 0), float(restitution or 0))
+        other.append((key, label, os.path.basename(d)))
     return list(GEOMETRIES) + [(sub, label) for _, label, sub in sorted(other)]
 
 
@@ -188,9 +197,11 @@ def tcon_one_degree_above(packs, tag):
 
 def tcon_at_angle(packs, tag, theta):
     """(mean, s.d., count) of t_con in the runs at the angle theta (paper 000
-    gives t_con at 19 deg for H = 6 d); a run that never became uniform is
-    not counted."""
-    return mean_sd([t for p in packs for th, t in p[f"tcon_{tag}"] if th == theta])
+    gives t_con at 19 deg for H = 6 d), the ramp's own t_con counted where its
+    theta_m is theta (the ramp tilted it there from the angle before, at
+    rest or not, as a t_con run does from the last static state: Fig. 8
+    draws both); a run that never became uniform is not counted."""
+    return mean_sd([t for p in packs for th, t in [p[tag]] + p[f"tcon_{tag}"] if th == theta])
 
 
 def slope(points):

@@ -19,8 +19,13 @@
 #   e.g. run_ensemble.sh build 3 1 0 3 1 70e3      (H = 3 d, packing 1, both ramps)
 # Environment: AVALANCHE_FREE (1: free ends, default; 0: periodic),
 #   AVALANCHE_LAYER (layer length in d, default 400 with free ends, 80 periodic),
+#   AVALANCHE_EDEM, AVALANCHE_REST (contact law of the grains: Young's modulus in
+#   Pa and restitution, default in.material's 1e7 and 0.3; the time step follows
+#   the modulus; a deposit already in the packing's directory is reused as it is,
+#   so a test of the contact law can start from the deposits of the default set),
 #   AVALANCHE_OUT (default examples/avalanche/out/ensemble, ensemble_periodic, or
-#   ensemble_L<LAYER> for free ends not 400 d long), AVALANCHE_NP (2),
+#   ensemble_L<LAYER> for free ends not 400 d long, with _E<EDEM> and
+#   _e<REST> appended when those are set), AVALANCHE_NP (2),
 #   AVALANCHE_SOURCE (bottom: paper 000's source, default; base: the rough base),
 #   AVALANCHE_KAPPA (kappa_scale of the vibration network, default 0.3),
 #   AVALANCHE_TFOLLOW (s, default 1.2 as paper 000), AVALANCHE_TSETTLE (s, 0.5),
@@ -60,12 +65,15 @@ tsettle=${AVALANCHE_TSETTLE:-0.5}
 if [ "$free" != 1 ]; then geometry=ensemble_periodic
 elif [ "$layer" = 400 ]; then geometry=ensemble
 else geometry=ensemble_L$layer; fi            # a layer-length test beside the 400 d set
+contact=()                                    # a contact-law test beside the default set
+if [ -n "${AVALANCHE_EDEM:-}" ]; then contact+=(-var Edem "$AVALANCHE_EDEM"); geometry+=_E$AVALANCHE_EDEM; fi
+if [ -n "${AVALANCHE_REST:-}" ]; then contact+=(-var rest "$AVALANCHE_REST"); geometry+=_e$AVALANCHE_REST; fi
 top=${AVALANCHE_OUT:-$here/out/$geometry}
 mkdir -p "$top"; top=$(cd "$top" && pwd)
 if [ "$(id -u)" -eq 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
 mpi=(mpirun -np "${AVALANCHE_NP:-2}")
 if mpirun --version 2>/dev/null | grep -q "Open MPI"; then mpi+=(--oversubscribe); fi
-lmprun() { "${mpi[@]}" "$lmp" -nocite -echo none -screen none "$@"; }
+lmprun() { "${mpi[@]}" "$lmp" -nocite -echo none -screen none "${contact[@]}" "$@"; }
 
 while [ $# -gt 0 ]; do
   H=$1 seed=$2 f=$3; shift 3

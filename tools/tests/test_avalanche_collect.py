@@ -183,3 +183,30 @@ def test_layers_of_another_length_beside_the_400_d_set(collect, tmp_path, capsys
     collect.print_tables(all_ens, {k: collect.summarise(v) for k, v in all_ens.items()})
     text = capsys.readouterr().out.split("### free ends, 800 d")[1]
     assert "t_con at 19° and H = 6 d, mean ± s.d. (runs): 0 kHz 0.50 ± 0.14 s (2), 70 kHz — s (0)" in text
+
+
+def test_sets_of_another_contact_law_after_the_lengths(collect, tmp_path):
+    # run_ensemble.sh with AVALANCHE_EDEM / AVALANCHE_REST appends _E<modulus>
+    # and _e<restitution> to the set's name: each is a geometry of its own,
+    # labelled with its contact law, after the 400 d set and the other
+    # lengths; names that are none of these are not read
+    for sub in ("ensemble", "ensemble_L800", "ensemble_E1e8", "ensemble_E1e9", "ensemble_E1e8_e0.1",
+                "ensemble_L800_E1e8", "ensemble_old"):
+        packing(tmp_path, sub, 6, 1, 6.0, ([(18, "uniform")], 18, 0.5), ([(15, "uniform")], 15, 0.2))
+    assert [label for _, label in collect.geometries(str(tmp_path))][2:] == [
+        "free ends, 400 d, E = 1e+08 Pa", "free ends, 400 d, E = 1e+08 Pa, restitution 0.1",
+        "free ends, 400 d, E = 1e+09 Pa", "free ends, 800 d", "free ends, 800 d, E = 1e+08 Pa"]
+    assert collect.geometries(str(tmp_path))[2][0] == "ensemble_E1e8"
+
+
+def test_tcon_at_19_degrees_counts_a_ramp_whose_theta_m_is_19(collect, tmp_path):
+    # a packing whose ramp became uniform at 19 deg has no t_con run there
+    # (the runs are above theta_m): its ramp's t_con is its time at 19 deg
+    a = packing(tmp_path, "ensemble", 6, 1, 6.0, ([(19, "uniform")], 19, 0.5), ([(15, "uniform")], 15, 0.2))
+    b = packing(tmp_path, "ensemble", 6, 2, 6.0, ([(18, "uniform")], 18, 0.9), ([(15, "uniform")], 15, 0.2))
+    ramp(b, "tcon_f0_19.0", [], 19.0, 0.3)
+    ramp(b, "tcon_f0_20.0", [], 20.0, 0.1)
+    packs = collect.ensembles(str(tmp_path))["free ends, 400 d"][6.0]
+    m, s, n = collect.tcon_at_angle(packs, "f0", 19.0)
+    assert (m, n) == (pytest.approx(0.4), 2) and s == pytest.approx(np.sqrt(0.02))
+    assert collect.tcon_at_angle(packs, "f70", 19.0)[2] == 0

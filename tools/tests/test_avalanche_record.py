@@ -101,3 +101,15 @@ def test_layers_of_another_length_recorded(record, collect, tmp_path):
     assert sorted(os.listdir(rec / "ensemble_L800" / "H6" / "s1")) == ["log.deposit", "log.f0", "log.f70"]
     assert (rec / "ensemble_L800" / "jobs.txt").read_text() == (out / "ensemble_L800" / "jobs.txt").read_text()
     assert collect.ensembles(str(rec))["free ends, 800 d"][6.0][0]["f0"] == (18.5, 0.25)
+
+
+@pytest.mark.parametrize("geometry, label", [("ensemble_E1e8", "free ends, 400 d, E = 1e+08 Pa"),
+                                             ("ensemble_e0.05", "free ends, 400 d, restitution 0.05")])
+def test_sets_of_another_contact_law_recorded(record, collect, tmp_path, geometry, label):
+    # run_ensemble.sh with AVALANCHE_EDEM=1e8 writes out/ensemble_E1e8, with
+    # AVALANCHE_REST=0.05 out/ensemble_e0.05
+    out, rec = tmp_path / "out", tmp_path / "rec"
+    packing(out, 1, f70_finished=True, geometry=geometry)
+    assert record.record(str(out), str(rec)) == 3
+    assert sorted(os.listdir(rec / geometry / "H6" / "s1")) == ["log.deposit", "log.f0", "log.f70"]
+    assert collect.ensembles(str(rec))[label][6.0][0]["f0"] == (18.5, 0.25)

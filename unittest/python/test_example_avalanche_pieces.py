@@ -179,10 +179,22 @@ def test_outputs_go_forward_in_time(pieced):
 
 
 @pytest.mark.parametrize("var, value, what", [("tpiece", "-1", "tpiece must be >= 0"),
-                                               ("append", "2", "append must be 0 (a new ramp) or 1")])
+                                               ("append", "2", "append must be 0 (a new ramp) or 1"),
+                                               ("Edem", "-1", "Edem must be a Young modulus > 0 in Pa"),
+                                               ("rest", "0", "rest must be a coefficient of restitution in (0, 1]")])
 def test_bad_piece_variables(tmp_path, var, value, what):
     done = subprocess.run([LMP, "-in", os.path.join(HERE, "in.avalanche"), "-var", "dir", HERE,
                            "-var", var, value, "-log", "log.bad", "-screen", "none", "-nocite"],
                           cwd=tmp_path, capture_output=True, text=True, timeout=60)
     text = open(tmp_path / "log.bad").read()
     assert f"ERROR: {what}" in text, text[-500:]
+
+
+def test_contact_law_from_the_environment(tmp_path):
+    # AVALANCHE_EDEM / AVALANCHE_REST reach the deposit and the ramp, which
+    # sets the law again after reading the deposit; the time step follows the
+    # modulus as E^(-1/2) (5 us at 1e7 Pa, 2.5 us at 4e7 Pa)
+    run_ensemble(tmp_path, AVALANCHE_EDEM="4e7", AVALANCHE_REST="0.5")
+    text = open(tmp_path / "H3" / "s7" / "log.f0").read()
+    assert "contact law Edem 4e7 Pa, restitution 0.5, time step 2.5e-06 s" in text
+    assert "theta_m = " in text
