@@ -144,8 +144,11 @@ def test_pieces_in_a_flowing_layer_on_2_ranks_bit_for_bit(tmp_path, whole):
     states = angles(two / "log.f70")
     log = open(two / "log.f70").read()
     assert log.count("paused after") == len(states) - 1 >= 3, "a boundary after each angle"
-    flows = [float(e) for e in re.findall(r"deg: partial .* max E_k/E_t (\S+)", log)]
-    assert len(flows) >= 2 and min(flows) > 1e-3, "the layer flows at the boundaries"
+    # (at least two boundaries where the layer moves fast, "local" with half of
+    # the grains mobile or "partial": which of the two changes from machine to
+    # machine)
+    flows = [float(e) for e in re.findall(r"deg: (?:local|partial) .* max E_k/E_t (\S+)", log)]
+    assert len([e for e in flows if e > 1e-3]) >= 2, "the layer flows at the boundaries"
     assert "Unused restart file" not in log, "fix us keeps its restart state"
     assert angle_lines(one / "log.f70") == angle_lines(two / "log.f70")
     for name in ("f70.dump", "f70.contacts"):
