@@ -5,8 +5,8 @@
 
 OUT_DIR (default examples/avalanche/out) holds ensemble_periodic/H<H>/s<seed>/,
 ensemble/H<H>/s<seed>/ (free ends, 400 d), ensemble_L<length>/H<H>/s<seed>/
-(free ends of another length) and ensemble_E<modulus>/... (another contact
-law; AVALANCHE_EDEM of run_ensemble.sh), each with log.deposit, log.f0,
+(free ends of another length) and ensemble_E<modulus>/..., ensemble_e<restitution>/...
+(another contact law; AVALANCHE_EDEM, AVALANCHE_REST of run_ensemble.sh), each with log.deposit, log.f0,
 log.f70 and the t_con runs log.tcon_f*_<theta>.  Prints markdown tables:
 packings, theta_m(H/d) per geometry with means and standard deviations, the
 fitted slope of theta_m(H/d) with its standard error, the 70 kHz shift (paired

@@ -196,7 +196,8 @@ def test_bad_piece_variables(tmp_path, var, value, what):
 def test_contact_law_from_the_environment(tmp_path):
     # AVALANCHE_EDEM / AVALANCHE_REST reach the deposit and the ramp, which
     # sets the law again after reading the deposit; the time step follows the
-    # modulus as E^(-1/2) (5 us at 1e7 Pa, 2.5 us at 4e7 Pa)
+    # modulus as E^(-1/2) (5 us at 1e7 Pa, 2.5 us at 4e7 Pa; the log prints
+    # LAMMPS's own dt, the step in force)
     run_ensemble(tmp_path, AVALANCHE_EDEM="4e7", AVALANCHE_REST="0.5")
     text = open(tmp_path / "H3" / "s7" / "log.f0").read()
     assert "contact law Edem 4e7 Pa, restitution 0.5, time step 2.5e-06 s" in text
