@@ -7,10 +7,11 @@ OUT_DIR (default examples/avalanche/out) holds ensemble_periodic/H<H>/s<seed>/,
 ensemble/H<H>/s<seed>/ (free ends, 400 d), ensemble_L<length>/H<H>/s<seed>/
 (free ends of another length) and ensemble_E<modulus>/..., ensemble_e<restitution>/...
 (another contact law; AVALANCHE_EDEM, AVALANCHE_REST of run_ensemble.sh), each with log.deposit, log.f0,
-log.f70 and the t_con runs log.tcon_f*_<theta>.  Prints markdown tables:
+log.f70 and the t_con runs log.tcon_f*_<theta> (log.tcon_f*_<theta>_u<hold>: the
+same with another hold time of the uniform criterion).  Prints markdown tables:
 packings, theta_m(H/d) per geometry with means and standard deviations, the
 fitted slope of theta_m(H/d) with its standard error, the 70 kHz shift (paired
-by packing), t_con, the ramps of a packing at other drive frequencies
+by packing), t_con (and against the hold time), the ramps of a packing at other drive frequencies
 (log.f60 ...) beside its 0 and 70 kHz ramps; writes OUT_DIR/summary.json and
 the figures fig7_thetam, fig8_tcon and, where the dumps and series are there (not in the record of
 record.py), fig10_chains_H6, fig3_modes_H6, fig6_9_sigma_H14.4; with the
@@ -43,6 +44,8 @@ PAPER_TCON_H6_19DEG = (1.15, 0.30)
 RESULT = re.compile(r"theta_m = ([0-9.]+|none) deg\s+t_con = ([-0-9.]+) s")
 GEOMETRIES = (("ensemble_periodic", "periodic"), ("ensemble", "free ends, 400 d"))
 PAPER_TCON_ANGLE_H6 = 19.0
+DEFAULT_TUNIFORM = 0.01   # s, in.avalanche's uniform hold (its thold)
+TCON_LOG = re.compile(r"([0-9.]+)(?:_u([0-9.e-]+))?")   # log.tcon_TAG_<theta>[_u<tuniform>]
 
 
 def geometries(top):
@@ -102,10 +105,15 @@ def packing(path):
             rest = m.group(1) if m else ""
         p[f"{tag}_rest"] = rest
         p[f"{tag}_onset"] = flow_onset(log) if os.path.exists(log) and np.isfinite(p[tag][0]) else np.nan
-        p[f"tcon_{tag}"] = []
+        p[f"tcon_{tag}"], p[f"tcon_{tag}_held"] = [], []
         for t in sorted(glob.glob(os.path.join(path, f"log.tcon_{tag}_*"))):
-            theta = float(t.rsplit("_", 1)[1])
-            p[f"tcon_{tag}"].append((theta, result(t)[1]))
+            m = TCON_LOG.fullmatch(os.path.basename(t)[len(f"log.tcon_{tag}_"):])
+            if not m:
+                continue
+            if m.group(2):            # AVALANCHE_TUNIFORM: (hold, theta, t_con)
+                p[f"tcon_{tag}_held"].append((float(m.group(2)), float(m.group(1)), result(t)[1]))
+            else:
+                p[f"tcon_{tag}"].append((float(m.group(1)), result(t)[1]))
     p["other"] = other_frequencies(path)
     return p
 
@@ -202,6 +210,21 @@ def tcon_at_angle(packs, tag, theta):
     rest or not, as a t_con run does from the last static state: Fig. 8
     draws both); a run that never became uniform is not counted."""
     return mean_sd([t for p in packs for th, t in [p[tag]] + p[f"tcon_{tag}"] if th == theta])
+
+
+def tcon_against_hold(packs, tag, theta):
+    """t_con at the angle theta for each hold time of the uniform criterion
+    (in.avalanche's tuniform; run_ensemble.sh with AVALANCHE_TUNIFORM):
+    [(hold, (mean, s.d., uniform runs), runs)], the default hold first
+    (tcon_at_angle).  A run that was not uniform within 0.1 + tfollow s
+    counts in `runs`, not in the mean."""
+    rows = [(DEFAULT_TUNIFORM, tcon_at_angle(packs, tag, theta),
+             sum(th == theta for p in packs for th, _ in [p[tag]] + p[f"tcon_{tag}"]))]
+    held = [(h, t) for p in packs for h, th, t in p[f"tcon_{tag}_held"] if th == theta]
+    for hold in sorted({h for h, _ in held}):
+        times = [t for h, t in held if h == hold]
+        rows.append((hold, mean_sd(times), len(times)))
+    return rows
 
 
 def slope(points):
@@ -314,6 +337,21 @@ def print_tables(all_ens, summary):
                 print(f"\nt_con at {a:g}° and H = 6 d, mean ± s.d. (runs): 0 kHz {fmt(m0)} s ({m0[2]}), "
                       f"70 kHz {fmt(m70)} s ({m70[2]}); paper 000 {PAPER_TCON_H6_19DEG[0]:g} / "
                       f"{PAPER_TCON_H6_19DEG[1]:g} s")
+        print_tcon_against_hold(by_h)
+
+
+def print_tcon_against_hold(by_h):
+    """t_con against the hold time of the uniform criterion, at the angles
+    where runs with another hold (AVALANCHE_TUNIFORM) are there."""
+    cases = sorted({(H, tag, th) for H, packs in by_h.items() for p in packs
+                    for tag in ("f0", "f70") for _, th, _ in p[f"tcon_{tag}_held"]})
+    if not cases:
+        return
+    print("\nt_con against the time the σ criteria must hold (tuniform), mean ± s.d. "
+          "(runs uniform within 1.3 s / runs):")
+    for H, tag, theta in cases:
+        print(f"- H = {H:g} d, {tag[1:]} kHz, {theta:g}°: " + "; ".join(
+            f"{hold:g} s: {fmt(ms)} s ({ms[2]}/{runs})" for hold, ms, runs in tcon_against_hold(by_h[H], tag, theta)))
 
 
 def thetam_table(rows, path):

@@ -15,7 +15,10 @@
 #         layer is tilted at once to theta_m + 1, + 2 and + 3 deg (one run each),
 #         (AVALANCHE_TCON_STEPS, default "1 2 3"; "" for none),
 #         and to the angles of AVALANCHE_TCON_ANGLES above theta_m (e.g. "19":
-#         paper 000's t_con at H = 6 d is given at 19 deg)
+#         paper 000's t_con at H = 6 d is given at 19 deg); with
+#         AVALANCHE_TUNIFORM (s) the sigma criteria must hold that long for a
+#         uniform flow (in.avalanche's tuniform, default 0.01 s) and the logs are
+#         log.tcon_TAG_<theta>_u<tuniform>, beside those of the default
 #   e.g. run_ensemble.sh build 3 1 0 3 1 70e3      (H = 3 d, packing 1, both ramps)
 # Environment: AVALANCHE_FREE (1: free ends, default; 0: periodic),
 #   AVALANCHE_LAYER (layer length in d, default 400 with free ends, 80 periodic),
@@ -87,13 +90,15 @@ while [ $# -gt 0 ]; do
     angles=$(awk -v a="$tm" -v steps="${AVALANCHE_TCON_STEPS-1 2 3}" -v extra="${AVALANCHE_TCON_ANGLES:-}" 'BEGIN{
       n = split(steps, s, " "); for (k = 1; k <= n; k++) printf "%.1f ", a + s[k]
       n = split(extra, e, " "); for (i = 1; i <= n; i++) if (e[i] > a + 1e-6) printf "%.1f ", e[i]}')
+    hold=(); suffix=
+    if [ -n "${AVALANCHE_TUNIFORM:-}" ]; then hold=(-var tuniform "$AVALANCHE_TUNIFORM"); suffix=_u$AVALANCHE_TUNIFORM; fi
     for th in $angles; do
-      ttag=tcon_${tag}_$th
+      ttag=tcon_${tag}_$th$suffix
       if [ -f "log.$ttag" ] && grep -q 'theta_m =' "log.$ttag"; then continue; fi
       t0=$SECONDS
       lmprun -in "$here/in.avalanche" -var dir "$here" -var restart "$tag.static.restart" -var pre 0 \
         -var tag "$ttag" -var freq "$f" -var kappa "$kappa" -var source "$source" -var theta0 "$th" -var thetamax "$th" \
-        -var tfollow "$tfollow" -var obslo "$obslo" -var obshi "$obshi" -var dumpevery 0 -log "log.$ttag"
+        -var tfollow "$tfollow" -var obslo "$obslo" -var obshi "$obshi" -var dumpevery 0 "${hold[@]}" -log "log.$ttag"
       echo "H$H s$seed $(grep -h 'theta_m =' "log.$ttag" | sed 's/^avalanche //')  layer $layer d free $free  wall $((SECONDS - t0)) s" | tee -a "$top/jobs.txt"
     done
     continue

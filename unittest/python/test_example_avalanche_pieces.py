@@ -184,7 +184,9 @@ def test_outputs_go_forward_in_time(pieced):
 @pytest.mark.parametrize("var, value, what", [("tpiece", "-1", "tpiece must be >= 0"),
                                                ("append", "2", "append must be 0 (a new ramp) or 1"),
                                                ("Edem", "-1", "Edem must be a Young modulus > 0 in Pa"),
-                                               ("rest", "0", "rest must be a coefficient of restitution in (0, 1]")])
+                                               ("rest", "0", "rest must be a coefficient of restitution in (0, 1]"),
+                                               ("tuniform", "2", "tuniform must lie between tchunk (0.001 s) and "
+                                                "twin + tfollow (1.3 s), got 2 s")])
 def test_bad_piece_variables(tmp_path, var, value, what):
     done = subprocess.run([LMP, "-in", os.path.join(HERE, "in.avalanche"), "-var", "dir", HERE,
                            "-var", var, value, "-log", "log.bad", "-screen", "none", "-nocite"],
@@ -202,3 +204,51 @@ def test_contact_law_from_the_environment(tmp_path):
     text = open(tmp_path / "H3" / "s7" / "log.f0").read()
     assert "contact law Edem 4e7 Pa, restitution 0.5, time step 2.5e-06 s" in text
     assert "theta_m = " in text
+
+
+def uniform_streak_start(series, hold, eps1=0.3, eps2=0.9, fspread=0.5):
+    """Time from the tilt to the first of `hold` consecutive samples with
+    sigma_1 < eps1, sigma_2 < eps2 and more than fspread of the grains mobile
+    (the series of a t_con run: one angle, a sample per ms after the lines
+    printed at the tilt's set-up), measured as in.avalanche does from the
+    tilt to the start of the first sample's ms; None if none."""
+    rows = [list(map(float, line.split())) for line in series_data(series)]
+    t0 = rows[0][0]
+    rows = [r for r in rows if r[0] > t0 + 1e-9]
+    run = 0
+    for k, r in enumerate(rows):
+        run = run + 1 if (r[3] < eps1 and r[4] < eps2 and r[7] > fspread) else 0
+        if run == hold:
+            return rows[k - hold + 1][0] - t0 - 1e-3
+    return None
+
+
+def test_tcon_run_with_a_longer_uniform_hold(tmp_path, whole):
+    # run_ensemble.sh tcon0 from the ramp's last static state, with the
+    # default hold (10 ms) and with AVALANCHE_TUNIFORM=0.05: the held run
+    # has its own log, says its hold, and its t_con is the start of the
+    # first 50-sample streak of its series (counted here), never earlier
+    # than the default's; both runs are the same computation up to the
+    # default's end
+    path = tmp_path / "H3" / "s7"
+    os.makedirs(path)
+    for name in ("deposit.restart", "log.deposit", "log.f0", "f0.static.restart"):
+        (path / name).write_bytes((whole / name).read_bytes())
+    theta_m = float(re.search(r"theta_m = ([0-9.]+)", open(whole / "log.f0").read()).group(1))
+    theta = f"{theta_m + 1:.1f}"
+    for hold in ("", "0.05"):
+        environ = dict(os.environ, AVALANCHE_OUT=str(tmp_path), AVALANCHE_NP="1", AVALANCHE_FREE="0",
+                       AVALANCHE_LAYER="20", AVALANCHE_TCON_STEPS="1", AVALANCHE_TUNIFORM=hold)
+        done = subprocess.run(["bash", ENSEMBLE, build_dir(), "3", "7", "tcon0"], env=environ,
+                              capture_output=True, text=True, timeout=600)
+        assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    default, held = path / f"log.tcon_f0_{theta}", path / f"log.tcon_f0_{theta}_u0.05"
+    t_default, t_held = (float(re.search(r"theta_m = [0-9.]+ deg  t_con = ([0-9.]+) s", open(log).read()).group(1))
+                         for log in (default, held))
+    assert "uniform after 0.01 s of sigma_1 < 0.3" in open(default).read()
+    assert "uniform after 0.05 s of sigma_1 < 0.3" in open(held).read()
+    assert t_held >= t_default
+    assert uniform_streak_start(path / f"tcon_f0_{theta}_u0.05.series", 50) == pytest.approx(t_held, abs=2e-4)
+    assert uniform_streak_start(path / f"tcon_f0_{theta}.series", 10) == pytest.approx(t_default, abs=2e-4)
+    a = series_data(path / f"tcon_f0_{theta}.series")
+    assert series_data(path / f"tcon_f0_{theta}_u0.05.series")[:len(a)] == a
