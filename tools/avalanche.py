@@ -30,6 +30,9 @@ Units are those of the run (SI for examples/avalanche).  Command line:
     python3 tools/avalanche.py ramp    run.series              state of each angle, theta_m, t_con,
                                                                 flow shape at theta_m, sigma_1 of
                                                                 the spreading flows
+    python3 tools/avalanche.py uniform run.series [--theta 19] [--holds 0.01 0.1]
+                                                                uniform stretches of one angle, t_con
+                                                                with the criteria held longer
     python3 tools/avalanche.py sigma-parts run.dump [--obs 0.3 0.7] [--dx 20] [--theta 14 14.5] [--per-frame]
                                                                 the parts of sigma_1 at each angle
     python3 tools/avalanche.py profile run.dump run.contacts --theta 10.5 [--dz 2] [--obs 0.3 0.7]
@@ -328,18 +331,23 @@ def split_by_angle(series):
     return [(theta[idx[0]], idx) for idx in np.split(np.arange(theta.size), edges)]
 
 
+def angle_samples(series, dt=1e-3):
+    """(theta, time since the tilt, index array) of each angle of a series.
+    The tilt happened at the last sample of the previous angle; a sample
+    printed at that same time (fix print at the set-up of a run) is dropped."""
+    for theta, idx in split_by_angle(series):
+        t0 = series["time"][idx[0] - 1] if idx[0] > 0 else series["time"][idx[0]] - dt
+        idx = idx[series["time"][idx] > t0 + 1e-9 * dt]
+        yield theta, series["time"][idx] - t0, idx
+
+
 def ramp_results(series, dt=1e-3, first_theta=None, **kw):
     """classify_angle() for each angle of a tilt-ramp series (pre-ramp angles skipped)."""
     results = []
-    for theta, idx in split_by_angle(series):
+    for theta, time, idx in angle_samples(series, dt):
         if first_theta is not None and theta < first_theta - 1e-9:
             continue
-        # the tilt happened at the last sample of the previous angle; a sample
-        # printed at that same time (fix print at the set-up of a run) is dropped
-        t0 = series["time"][idx[0] - 1] if idx[0] > 0 else series["time"][idx[0]] - dt
-        idx = idx[series["time"][idx] > t0 + 1e-9 * dt]
-        results.append(classify_angle(series["time"][idx] - t0, series["ratio"][idx],
-                                      series["sigma1"][idx], series["sigma2"][idx],
+        results.append(classify_angle(time, series["ratio"][idx], series["sigma1"][idx], series["sigma2"][idx],
                                       series["mobile"][idx], dt=dt, theta=theta, **kw))
     return results
 
@@ -374,11 +382,43 @@ def sigma1_spread(series, theta, fspread=0.5):
     return float(np.median(values)), float(np.percentile(values, 10))
 
 
-def t_con(time, sigma1, sigma2, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, hold=1):
-    """First time from which sigma_1 < eps1 and sigma_2 < eps2 hold for `hold` samples."""
-    n = runs_of((np.asarray(sigma1) < eps1) & (np.asarray(sigma2) < eps2))
-    k = np.flatnonzero(n >= hold)
-    return float(np.asarray(time)[k[0] - hold + 1]) if k.size else np.nan
+def uniform_streaks(time, sigma1, sigma2, mobile=None, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, fspread=0.5):
+    """(time of the first sample, number of samples) of every stretch of
+    consecutive samples with sigma_1 < eps1 and sigma_2 < eps2 (and more
+    than fspread of the grains mobile, when `mobile` is given)."""
+    ok = (np.asarray(sigma1) < eps1) & (np.asarray(sigma2) < eps2)
+    if mobile is not None:
+        ok &= np.asarray(mobile) > fspread
+    n = runs_of(ok)
+    ends = np.flatnonzero(ok & np.append(~ok[1:], True))
+    time = np.asarray(time, float)
+    return [(float(time[k - n[k] + 1]), int(n[k])) for k in ends]
+
+
+def t_con(time, sigma1, sigma2, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, hold=1, mobile=None, fspread=0.5):
+    """First time from which the criteria of uniform_streaks() hold for `hold` samples."""
+    for start, samples in uniform_streaks(time, sigma1, sigma2, mobile, eps1, eps2, fspread):
+        if samples >= hold:
+            return start
+    return np.nan
+
+
+def uniform_at_angle(series, theta=None, holds=(0.01, 0.05, 0.1, 0.2, 0.4), dt=1e-3):
+    """The uniform stretches of one angle of a series (default: the last
+    one, the angle of a t_con run): (theta, duration of the series at that
+    angle, [(start, length)] in s from the tilt, {hold: t_con} with the
+    criteria held that long (nan if not within the series), fraction of the
+    time uniform from the first stretch to the end).  Times count as
+    in.avalanche's t_con: from the tilt to the start of a sample's ms."""
+    found = [a for a in angle_samples(series, dt) if theta is None or np.isclose(a[0], theta)]
+    if not found:
+        raise ValueError(f"no samples at theta = {theta}")
+    theta, time, idx = found[-1]
+    cols = (time - dt, series["sigma1"][idx], series["sigma2"][idx])
+    streaks = uniform_streaks(*cols, mobile=series["mobile"][idx])
+    tcons = {h: t_con(*cols, hold=int(round(h / dt)), mobile=series["mobile"][idx]) for h in holds}
+    covered = sum(n for _, n in streaks) * dt / (time[-1] - streaks[0][0]) if streaks else np.nan
+    return theta, float(time[-1]), [(t, n * dt) for t, n in streaks], tcons, covered
 
 
 # ---------------------------------------------------------------- vibration network
@@ -441,6 +481,12 @@ def main(argv=None):
     r.add_argument("--epsE", type=float, default=EPS_E)
     r.add_argument("--tfollow", type=float, default=1.2, help="s a rearrangement is followed after the window "
                    "(in.avalanche's tfollow; the demo uses 0.3)")
+    u = sub.add_parser("uniform", help="where the flow of one angle is uniform (a t_con run: the last angle), "
+                       "and t_con with the criteria held for several times")
+    u.add_argument("series")
+    u.add_argument("--theta", type=float, default=None, help="angle (deg; default the last of the series)")
+    u.add_argument("--holds", type=float, nargs="+", default=[0.01, 0.05, 0.1, 0.2, 0.4], help="hold times (s)")
+    u.add_argument("--min", type=float, default=0.005, help="shortest uniform stretch listed (s)")
     pr = sub.add_parser("profile", help="mu*/mu and f_n of the contacts against the height above the base")
     pr.add_argument("dump")
     pr.add_argument("contacts")
@@ -482,6 +528,13 @@ def main(argv=None):
         if np.isfinite(tm):
             print(f"bottom/top half velocity of the uniform flow: {bottom_to_top_velocity(series, tm):.3f} "
                   "(Bagnold profile 0.40, linear 0.33, plug 1)")
+    elif a.cmd == "uniform":
+        theta, end, streaks, tcons, covered = uniform_at_angle(read_series(a.series), a.theta, a.holds)
+        print(f"theta {theta:g} deg, {end:.3f} s after the tilt; uniform stretches of {a.min * 1e3:g} ms or more "
+              "(start s, length ms): " + ", ".join(f"{t:.3f} {n * 1e3:.0f}" for t, n in streaks if n >= a.min - 1e-9))
+        print(f"uniform {covered:.0%} of the time from the first stretch to the end" if streaks else "never uniform")
+        print("t_con with the criteria held " + ", ".join(
+            f"{h:g} s: " + (f"{t:.3f} s" if np.isfinite(t) else "—") for h, t in tcons.items()))
     elif a.cmd == "profile":
         atoms = last_frame_at(read_dump(a.dump), a.theta)
         print(f"# timestep {atoms.timestep}, {a.theta:g} deg: z/d (bin) contacts mean_mu*/mu "

@@ -227,6 +227,37 @@ def test_ramp_and_theta_m(tmp_path):
     assert math.isnan(av.theta_m(res[:2])[0])
 
 
+def test_uniform_stretches_of_a_t_con_run(tmp_path, capsys):
+    # a t_con run at 19 deg tilted at t = 2 s (set-up lines at that time, at
+    # the old and the new angle, ignored): uniform in samples 100-129 (30 ms),
+    # 140-144 (5 ms, the mobile fraction drops at 145) and 150-399 (250 ms);
+    # t_con counts from the tilt to the start of the first sample's ms
+    n = 400
+    ok = np.zeros(n, bool)
+    ok[100:130] = ok[140:145] = ok[150:] = True
+    mobile = np.full(n, 0.9)
+    mobile[145:150] = 0.4
+    sigma1 = np.where(ok | (np.arange(n) >= 145), 0.2, 0.5)
+    rows = [[2.0, 0.0, 1e-2, 3, 3, 0, 0, 0.0, 1, 0], [2.0, 19.0, 1e-2, 3, 3, 0, 0, 0.0, 1, 0]]
+    rows += [[2.0 + (k + 1) * DT, 19.0, 1e-2, sigma1[k], 0.5, 0.1, 0.05, mobile[k], 1, 0] for k in range(n)]
+    path = tmp_path / "tcon.series"
+    np.savetxt(path, rows, header="time theta ...")
+    theta, end, streaks, tcons, covered = av.uniform_at_angle(av.read_series(path), holds=(0.01, 0.05, 0.3))
+    assert theta == 19.0 and end == pytest.approx(0.4)
+    assert [(round(t, 6), round(d, 6)) for t, d in streaks] == [(0.1, 0.03), (0.14, 0.005), (0.15, 0.25)]
+    assert tcons[0.01] == pytest.approx(0.1) and tcons[0.05] == pytest.approx(0.15) and math.isnan(tcons[0.3])
+    assert covered == pytest.approx(0.285 / 0.3)
+    assert av.t_con(DT * np.arange(n), sigma1, np.full(n, 0.5), hold=30) == pytest.approx(0.1)
+    assert av.t_con(DT * np.arange(n), sigma1, np.full(n, 0.5), hold=31) == pytest.approx(0.14), \
+        "without the mobile fraction 140-399 is one stretch"
+    with pytest.raises(ValueError):
+        av.uniform_at_angle(av.read_series(path), theta=20.0)
+    av.main(["uniform", str(path), "--holds", "0.01", "0.3", "--min", "0.01"])
+    text = capsys.readouterr().out
+    assert "(start s, length ms): 0.100 30, 0.150 250\n" in text
+    assert "uniform 95% of the time" in text and "0.01 s: 0.100 s, 0.3 s: —" in text
+
+
 def test_sigma1_spread_of_the_spreading_samples():
     # at 12 deg: sigma_1 = 0.1 ... 1.0 in mobile samples, 5.0 in still ones (left out)
     sigma1 = np.r_[np.linspace(0.1, 1.0, 10), np.full(5, 5.0), [0.7]]
