@@ -79,11 +79,10 @@ def fig_sigma(a):
     fig, axes = plt.subplots(1, len(a.series), figsize=(4.2 * len(a.series), 3.2), squeeze=False)
     for ax, path, theta in zip(axes[0], a.series, a.theta):
         s = av.read_series(path)
-        parts = [idx for th, idx in av.split_by_angle(s) if abs(th - theta) < 1e-6]
+        parts = [(t, idx) for th, t, idx in av.angle_samples(s) if abs(th - theta) < 1e-6]
         if not parts:
             sys.exit(f"{path}: no samples at theta = {theta}")
-        idx = parts[-1]
-        t = s["time"][idx] - s["time"][idx[0]] + (s["time"][1] - s["time"][0])
+        t, idx = parts[-1]
         ax.semilogy(t, s["sigma1"][idx], color="tab:blue", label=r"$\sigma_1$ (top)")
         ax.semilogy(t, s["sigma2"][idx], color="tab:red", label=r"$\sigma_2$ (bottom)")
         ax.axhline(av.EPS_SIGMA1, color="tab:blue", ls="--", lw=1)

@@ -14,7 +14,8 @@ fitted slope of theta_m(H/d) with its standard error, the 70 kHz shift (paired
 by packing), t_con (and against the hold time), the ramps of a packing at other drive frequencies
 (log.f60 ...) beside its 0 and 70 kHz ramps; writes OUT_DIR/summary.json and
 the figures fig7_thetam, fig8_tcon and, where the dumps and series are there (not in the record of
-record.py), fig10_chains_H6, fig3_modes_H6, fig6_9_sigma_H14.4; with the
+record.py), fig10_chains_H6, fig3_modes_H6, fig6_9_sigma_H14.4 and, with t_con runs of
+another hold at 19 deg and H = 6 d, tcon_hold_sigma_H6 (sigma_l of the longest-held run); with the
 runs of `run_production.sh build kappa` (OUT_DIR/kappa/k<kappa>/), the table
 and figure kappa_shift of the 70 kHz shift against kappa_scale (PNG).
 """
@@ -110,8 +111,9 @@ def packing(path):
             m = TCON_LOG.fullmatch(os.path.basename(t)[len(f"log.tcon_{tag}_"):])
             if not m:
                 continue
-            if m.group(2):            # AVALANCHE_TUNIFORM: (hold, theta, t_con)
-                p[f"tcon_{tag}_held"].append((float(m.group(2)), float(m.group(1)), result(t)[1]))
+            if m.group(2):            # AVALANCHE_TUNIFORM: (hold, theta, t_con, run tag)
+                p[f"tcon_{tag}_held"].append((float(m.group(2)), float(m.group(1)), result(t)[1],
+                                              os.path.basename(t)[len("log."):]))
             else:
                 p[f"tcon_{tag}"].append((float(m.group(1)), result(t)[1]))
     p["other"] = other_frequencies(path)
@@ -220,7 +222,7 @@ def tcon_against_hold(packs, tag, theta):
     counts in `runs`, not in the mean."""
     rows = [(DEFAULT_TUNIFORM, tcon_at_angle(packs, tag, theta),
              sum(th == theta for p in packs for th, _ in [p[tag]] + p[f"tcon_{tag}"]))]
-    held = [(h, t) for p in packs for h, th, t in p[f"tcon_{tag}_held"] if th == theta]
+    held = [(h, t) for p in packs for h, th, t, _ in p[f"tcon_{tag}_held"] if th == theta]
     for hold in sorted({h for h, _ in held}):
         times = [t for h, t in held if h == hold]
         rows.append((hold, mean_sd(times), len(times)))
@@ -344,7 +346,7 @@ def print_tcon_against_hold(by_h):
     """t_con against the hold time of the uniform criterion, at the angles
     where runs with another hold (AVALANCHE_TUNIFORM) are there."""
     cases = sorted({(H, tag, th) for H, packs in by_h.items() for p in packs
-                    for tag in ("f0", "f70") for _, th, _ in p[f"tcon_{tag}_held"]})
+                    for tag in ("f0", "f70") for _, th, _, _ in p[f"tcon_{tag}_held"]})
     if not cases:
         return
     print("\nt_con against the time the σ criteria must hold (tuniform), mean ± s.d. "
@@ -424,6 +426,23 @@ def figures(all_ens, summary, top, figdir):
             for _, th in sers:
                 args += ["--theta", f"{th:g}"]
             figs.main(args + ["-o", os.path.join(figdir, f"fig6_9_sigma_H{H:g}.png"), "--dpi", "80"])
+    held = held_series(by_h.get(6.0, []), "f0", PAPER_TCON_ANGLE_H6)
+    if held:
+        args = ["sigma"] + held + ["--theta", f"{PAPER_TCON_ANGLE_H6:g}"] * len(held)
+        figs.main(args + ["-o", os.path.join(figdir, "tcon_hold_sigma_H6.png"), "--dpi", "80"])
+
+
+def held_series(packs, tag, theta):
+    """The series of each packing's t_con run at theta with the longest hold
+    of the uniform criterion (AVALANCHE_TUNIFORM), where it is there: the
+    run followed longest after its flow first became uniform."""
+    paths = []
+    for p in packs:
+        runs = sorted((h, run) for h, th, _, run in p[f"tcon_{tag}_held"] if th == theta)
+        path = os.path.join(p["path"], f"{runs[-1][1]}.series") if runs else ""
+        if os.path.exists(path):
+            paths.append(path)
+    return paths
 
 
 def print_kappa(rows):

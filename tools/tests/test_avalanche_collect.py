@@ -234,3 +234,7 @@ def test_tcon_against_the_hold_of_the_uniform_criterion(collect, tmp_path, capsy
     collect.print_tables(all_ens, {k: collect.summarise(v) for k, v in all_ens.items()})
     text = capsys.readouterr().out
     assert "- H = 6 d, 0 kHz, 19°: 0.01 s: 0.40 ± 0.14 s (2/2); 0.1 s: 0.80 ± 0.14 s (2/2); 0.3 s: 1.00 s (1/2)" in text
+    # the figure of sigma_l draws each packing's longest-held run, where its series is there
+    for path, name in ((a, "tcon_f0_19.0_u0.3"), (b, "tcon_f0_19.0_u0.1")):
+        (path / f"{name}.series").write_text("")
+    assert collect.held_series(packs, "f0", 19.0) == [str(a / "tcon_f0_19.0_u0.3.series")]
