@@ -46,6 +46,7 @@ RESULT = re.compile(r"theta_m = ([0-9.]+|none) deg\s+t_con = ([-0-9.]+) s")
 GEOMETRIES = (("ensemble_periodic", "periodic"), ("ensemble", "free ends, 400 d"))
 PAPER_TCON_ANGLE_H6 = 19.0
 DEFAULT_TUNIFORM = 0.01   # s, in.avalanche's uniform hold (its thold)
+FOLLOW = 1.3              # s, twin + tfollow: how long a t_con run follows its angle
 TCON_LOG = re.compile(r"([0-9.]+)(?:_u([0-9.e-]+))?")   # log.tcon_TAG_<theta>[_u<tuniform>]
 
 
@@ -217,16 +218,21 @@ def tcon_at_angle(packs, tag, theta):
 def tcon_against_hold(packs, tag, theta):
     """t_con at the angle theta for each hold time of the uniform criterion
     (in.avalanche's tuniform; run_ensemble.sh with AVALANCHE_TUNIFORM):
-    [(hold, (mean, s.d., uniform runs), runs)], the default hold first
-    (tcon_at_angle).  A run that was not uniform within 0.1 + tfollow s
-    counts in `runs`, not in the mean."""
-    rows = [(DEFAULT_TUNIFORM, tcon_at_angle(packs, tag, theta),
-             sum(th == theta for p in packs for th, _ in [p[tag]] + p[f"tcon_{tag}"]))]
+    [(hold, [t_con of each run, packing by packing])], the default hold
+    first (the runs of tcon_at_angle); nan for a run that was not uniform
+    within 0.1 + tfollow s."""
+    rows = [(DEFAULT_TUNIFORM, [t for p in packs for th, t in [p[tag]] + p[f"tcon_{tag}"] if th == theta])]
     held = [(h, t) for p in packs for h, th, t, _ in p[f"tcon_{tag}_held"] if th == theta]
     for hold in sorted({h for h, _ in held}):
-        times = [t for h, t in held if h == hold]
-        rows.append((hold, mean_sd(times), len(times)))
+        rows.append((hold, [t for h, t in held if h == hold]))
     return rows
+
+
+def mean_with_censored(times, hold, follow=FOLLOW):
+    """Mean t_con with each run that was not uniform within `follow` s
+    counted at follow - hold, the latest t_con it could have shown: a
+    lower bound of the mean when some runs are censored."""
+    return float(np.mean([t if np.isfinite(t) else follow - hold for t in times]))
 
 
 def slope(points):
@@ -349,11 +355,14 @@ def print_tcon_against_hold(by_h):
                     for tag in ("f0", "f70") for _, th, _, _ in p[f"tcon_{tag}_held"]})
     if not cases:
         return
-    print("\nt_con against the time the σ criteria must hold (tuniform), mean ± s.d. "
-          "(runs uniform within 1.3 s / runs):")
+    print("\nt_con against the time the σ criteria must hold (tuniform): the runs packing by packing "
+          "(—: not uniform within 1.3 s), their mean ± s.d., and the mean with those counted at 1.3 s − hold:")
     for H, tag, theta in cases:
-        print(f"- H = {H:g} d, {tag[1:]} kHz, {theta:g}°: " + "; ".join(
-            f"{hold:g} s: {fmt(ms)} s ({ms[2]}/{runs})" for hold, ms, runs in tcon_against_hold(by_h[H], tag, theta)))
+        print(f"- H = {H:g} d, {tag[1:]} kHz, {theta:g}°:")
+        for hold, times in tcon_against_hold(by_h[H], tag, theta):
+            ms = mean_sd(times)
+            bound = f", ≥ {mean_with_censored(times, hold):.2f} s" if ms[2] < len(times) else ""
+            print(f"  - {hold:g} s: " + ", ".join(num(t, ".2f") for t in times) + f" s: {fmt(ms)} s{bound}")
 
 
 def thetam_table(rows, path):

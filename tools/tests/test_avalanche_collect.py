@@ -215,25 +215,29 @@ def test_tcon_at_19_degrees_counts_a_ramp_whose_theta_m_is_19(collect, tmp_path)
 def test_tcon_against_the_hold_of_the_uniform_criterion(collect, tmp_path, capsys):
     # runs with AVALANCHE_TUNIFORM (log.tcon_f0_19.0_u0.1) are kept apart from
     # the t_con runs of Fig. 8 and listed by hold time; the default hold's
-    # row is tcon_at_angle's; a run not uniform within 1.3 s is counted as a
-    # run but not in the mean
+    # row holds tcon_at_angle's runs; a run not uniform within 1.3 s is
+    # listed as a dash, left out of the mean and counted at 1.3 s - hold in
+    # the lower bound
     a = packing(tmp_path, "ensemble", 6, 1, 6.0, ([(18, "uniform")], 18, 0.5), ([(15, "uniform")], 15, 0.2))
     b = packing(tmp_path, "ensemble", 6, 2, 6.0, ([(18, "uniform")], 18, 0.9), ([(15, "uniform")], 15, 0.2))
     for path, t, t_held in ((a, 0.3, 0.7), (b, 0.5, 0.9)):
         ramp(path, "tcon_f0_19.0", [], 19.0, t)
         ramp(path, "tcon_f0_19.0_u0.1", [], 19.0, t_held)
     (a / "log.tcon_f0_19.0_u0.3").write_text("avalanche tcon_f0_19.0_u0.3: freq 0 Hz  theta_m = none deg  t_con = -1 s\n")
-    ramp(b, "tcon_f0_19.0_u0.3", [], 19.0, 1.0)
+    ramp(b, "tcon_f0_19.0_u0.3", [], 19.0, 0.6)
     all_ens = collect.ensembles(str(tmp_path))
     packs = all_ens["free ends, 400 d"][6.0]
     assert [p["tcon_f0"] for p in packs] == [[(19.0, 0.3)], [(19.0, 0.5)]], "Fig. 8's runs only"
     rows = collect.tcon_against_hold(packs, "f0", 19.0)
-    assert [(h, n) for h, _, n in rows] == [(0.01, 2), (0.1, 2), (0.3, 2)]
-    assert rows[0][1][0] == pytest.approx(0.4) and rows[1][1][0] == pytest.approx(0.8)
-    assert rows[2][1][0] == pytest.approx(1.0) and rows[2][1][2] == 1
+    assert [h for h, _ in rows] == [0.01, 0.1, 0.3]
+    assert rows[0][1] == [0.3, 0.5] and rows[1][1] == [0.7, 0.9]
+    assert np.isnan(rows[2][1][0]) and rows[2][1][1] == 0.6
+    # the run not uniform within 1.3 s counts at 1.3 - 0.3 = 1.0 s in the bound
+    assert collect.mean_with_censored(rows[2][1], 0.3) == pytest.approx(0.8)
     collect.print_tables(all_ens, {k: collect.summarise(v) for k, v in all_ens.items()})
     text = capsys.readouterr().out
-    assert "- H = 6 d, 0 kHz, 19°: 0.01 s: 0.40 ± 0.14 s (2/2); 0.1 s: 0.80 ± 0.14 s (2/2); 0.3 s: 1.00 s (1/2)" in text
+    assert "  - 0.01 s: 0.30, 0.50 s: 0.40 ± 0.14 s\n" in text
+    assert "  - 0.3 s: —, 0.60 s: 0.60 s, ≥ 0.80 s\n" in text
     # the figure of sigma_l draws each packing's longest-held run, where its series is there
     for path, name in ((a, "tcon_f0_19.0_u0.3"), (b, "tcon_f0_19.0_u0.1")):
         (path / f"{name}.series").write_text("")
