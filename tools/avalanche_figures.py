@@ -90,7 +90,7 @@ def fig_sigma(a):
         ax.set_ylim(0.05, 100)
         ax.set_xlabel("time since the tilt (s)")
         ax.set_ylabel(r"$\sigma_l$")
-        ax.set_title(f"{path.split('/')[-1]}: $\\theta$ = {theta:g}°", fontsize=9)
+        ax.set_title(f"{'/'.join(path.split('/')[-2:])}: $\\theta$ = {theta:g}°", fontsize=9)
         ax.legend(fontsize=8)
     fig.tight_layout()
     return fig
