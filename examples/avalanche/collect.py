@@ -206,22 +206,29 @@ def tcon_one_degree_above(packs, tag):
     return mean_sd([t for p in packs for th, t in p[f"tcon_{tag}"] if th == p[tag][0] + 1.0])
 
 
-def tcon_at_angle(packs, tag, theta):
-    """(mean, s.d., count) of t_con in the runs at the angle theta (paper 000
-    gives t_con at 19 deg for H = 6 d), the ramp's own t_con counted where its
+def tcon_runs_at_angle(packs, tag, theta):
+    """t_con of every run at the angle theta, packing by packing (nan for a
+    run that never became uniform), the ramp's own t_con counted where its
     theta_m is theta (the ramp tilted it there from the angle before, at
     rest or not, as a t_con run does from the last static state: Fig. 8
-    draws both); a run that never became uniform is not counted."""
-    return mean_sd([t for p in packs for th, t in [p[tag]] + p[f"tcon_{tag}"] if th == theta])
+    draws both)."""
+    return [t for p in packs for th, t in [p[tag]] + p[f"tcon_{tag}"] if th == theta]
+
+
+def tcon_at_angle(packs, tag, theta):
+    """(mean, s.d., count) of t_con in the runs at the angle theta (paper 000
+    gives t_con at 19 deg for H = 6 d; tcon_runs_at_angle); a run that never
+    became uniform is not counted."""
+    return mean_sd(tcon_runs_at_angle(packs, tag, theta))
 
 
 def tcon_against_hold(packs, tag, theta):
     """t_con at the angle theta for each hold time of the uniform criterion
     (in.avalanche's tuniform; run_ensemble.sh with AVALANCHE_TUNIFORM):
     [(hold, [t_con of each run, packing by packing])], the default hold
-    first (the runs of tcon_at_angle); nan for a run that was not uniform
-    within 0.1 + tfollow s."""
-    rows = [(DEFAULT_TUNIFORM, [t for p in packs for th, t in [p[tag]] + p[f"tcon_{tag}"] if th == theta])]
+    first (tcon_runs_at_angle); nan for a run that was not uniform within
+    0.1 + tfollow s."""
+    rows = [(DEFAULT_TUNIFORM, tcon_runs_at_angle(packs, tag, theta))]
     held = [(h, t) for p in packs for h, th, t, _ in p[f"tcon_{tag}_held"] if th == theta]
     for hold in sorted({h for h, _ in held}):
         rows.append((hold, [t for h, t in held if h == hold]))
