@@ -131,16 +131,20 @@ def fig_thetam(a):
 
 def fig_kappa(a):
     """The 70 kHz shift against kappa_scale, from lines "kappa H seed shift
-    mu_factor" (one per 70 kHz ramp): every ramp, the mean at each kappa, and
-    paper 000's shift of about 2 deg as a band."""
+    mu_factor geometry" (one per 70 kHz ramp; geometry "periodic" or
+    "free_ends"): every ramp, the mean at each kappa for each H and geometry,
+    and paper 000's shift of about 2 deg as a band."""
     t = np.atleast_2d(np.loadtxt(a.table, usecols=(0, 1, 3, 4)))
+    geometry = np.atleast_1d(np.loadtxt(a.table, usecols=5, dtype=str))
     fig, ax = plt.subplots(figsize=(4.5, 3.4))
     ax.axhspan(1.5, 2.5, color="0.85", label="paper 000: ≈ 2°")
     ax.axhline(0, color="0.5", lw=0.6)
-    for k, H in enumerate(np.unique(t[:, 1])):
-        rows = t[t[:, 1] == H]
+    groups = sorted({(g, H) for g, H in zip(geometry, t[:, 1])}, key=lambda x: (x[1], x[0]))
+    for k, (g, H) in enumerate(groups):
+        rows = t[(geometry == g) & (t[:, 1] == H)]
         kappas = np.unique(rows[:, 0])
-        ax.plot(rows[:, 0], rows[:, 2], "o", color=f"C{k}", alpha=0.6, label=f"H = {H:g} d, one ramp each")
+        ax.plot(rows[:, 0], rows[:, 2], "o", color=f"C{k}", alpha=0.6,
+                label=f"H = {H:g} d, {g.replace('_', ' ')}, one ramp each")
         ax.plot(kappas, [rows[rows[:, 0] == x, 2].mean() for x in kappas], "-", color=f"C{k}", label="mean")
     ax.set_xscale("log")
     ax.set_xlabel("kappa_scale")

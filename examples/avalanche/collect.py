@@ -16,8 +16,9 @@ by packing), t_con (and against the hold time), the ramps of a packing at other 
 the figures fig7_thetam, fig8_tcon and, where the dumps and series are there (not in the record of
 record.py), fig10_chains_H6, fig3_modes_H6, fig6_9_sigma_H14.4 and, with t_con runs of
 another hold at 19 deg and H = 6 d, tcon_hold_sigma_H6 (sigma_l of the longest-held run); with the
-runs of `run_production.sh build kappa` (OUT_DIR/kappa/k<kappa>/), the table
-and figure kappa_shift of the 70 kHz shift against kappa_scale (PNG).
+runs of `run_production.sh build kappa` (OUT_DIR/kappa/k<kappa>/, periodic) and
+`kappa_free` (OUT_DIR/kappa_free/k<kappa>/, free ends), the tables and the
+figure kappa_shift of the 70 kHz shift against kappa_scale (PNG).
 """
 import glob
 import json
@@ -172,16 +173,22 @@ def last_mu_factor(log):
     return values[-1] if values else np.nan
 
 
-def kappa_study(top):
+# the kappa_scale studies of run_production.sh: directory -> (the geometry
+# whose ramps at the default kappa_scale 0.3 they stand beside, its label)
+KAPPA_SETS = {"kappa": ("ensemble_periodic", "periodic"), "kappa_free": ("ensemble", "free ends")}
+
+
+def kappa_study(top, kset="kappa"):
     """Rows (kappa, H, seed, theta_m 0 Hz, theta_m 70 kHz, shift, mean mu*/mu
-    below theta_m) of the 70 kHz ramps in OUT/kappa/k<kappa>/H<H>/s<seed>,
+    below theta_m) of the 70 kHz ramps in OUT/<kset>/k<kappa>/H<H>/s<seed>,
     each beside the same packing's ramps at the default kappa_scale 0.3 in
-    ensemble_periodic."""
+    the geometry of KAPPA_SETS[kset]."""
+    reference = KAPPA_SETS[kset][0]
     rows = {}                 # (kappa, H, seed) -> row: the reference ramps appear once
-    for d in sorted(glob.glob(os.path.join(top, "kappa", "k*", "H*", "s*"))):
+    for d in sorted(glob.glob(os.path.join(top, kset, "k*", "H*", "s*"))):
         kdir, hdir = os.path.dirname(os.path.dirname(d)), os.path.dirname(d)
         kappa, H = float(os.path.basename(kdir)[1:]), float(os.path.basename(hdir)[1:])
-        ref = os.path.join(top, "ensemble_periodic", os.path.basename(hdir), os.path.basename(d))
+        ref = os.path.join(top, reference, os.path.basename(hdir), os.path.basename(d))
         t0 = result(os.path.join(ref, "log.f0"))[0]
         for k, path in ((0.3, ref), (kappa, d)):
             log = os.path.join(path, "log.f70")
@@ -461,23 +468,27 @@ def held_series(packs, tag, theta):
     return paths
 
 
-def print_kappa(rows):
+def print_kappa(rows, label):
     if not rows:
         return
-    print("\n### 70 kHz shift against kappa_scale (periodic; packings of the periodic set)\n")
+    print(f"\n### 70 kHz shift against kappa_scale ({label}; packings of the {label} set)\n")
     print("| kappa_scale | H/d | packing | θ_m 0 kHz | θ_m 70 kHz | shift | mean μ*/μ before θ_m |")
     print("|---|---|---|---|---|---|---|")
     for k, H, seed, t0, t70, shift, mu in rows:
         print(f"| {k:g} | {H:g} | {seed} | {t0:g}° | {t70:g}° | {shift:g}° | {mu:.3f} |")
 
 
-def kappa_figure(rows, top, figdir):
-    if not rows:
+def kappa_figure(rows_by_set, top, figdir):
+    """kappa_shift.png from every kappa_scale study (rows_by_set: kset -> rows
+    of kappa_study)."""
+    if not any(rows_by_set.values()):
         return
     table = os.path.join(top, "kappa.txt")
     with open(table, "w") as f:
-        for k, H, seed, t0, t70, shift, mu in rows:
-            f.write(f"{k:g} {H:g} {seed} {shift:g} {mu:g}\n")
+        for kset, rows in rows_by_set.items():
+            geometry = KAPPA_SETS[kset][1].replace(" ", "_")
+            for k, H, seed, t0, t70, shift, mu in rows:
+                f.write(f"{k:g} {H:g} {seed} {shift:g} {mu:g} {geometry}\n")
     figs.main(["kappa", table, "-o", os.path.join(figdir, "kappa_shift.png"), "--dpi", "80"])
 
 
@@ -497,8 +508,9 @@ def main(top=os.path.join(here, "out"), figdir=os.path.join(here, "figures")):
     all_ens = ensembles(top)
     summary = {label: summarise(by_h) for label, by_h in all_ens.items()}
     print_tables(all_ens, summary)
-    kappa_rows = kappa_study(top)
-    print_kappa(kappa_rows)
+    kappa_rows = {kset: kappa_study(top, kset) for kset in KAPPA_SETS}
+    for kset, rows in kappa_rows.items():
+        print_kappa(rows, KAPPA_SETS[kset][1])
     figures(all_ens, summary, top, figdir)
     kappa_figure(kappa_rows, top, figdir)
     with open(os.path.join(top, "summary.json"), "w") as f:

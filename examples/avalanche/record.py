@@ -21,7 +21,7 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 KEPT = ("deposit:", "avalanche ", "angle ", "Total wall time:")
-GEOMETRIES = ("ensemble", "ensemble_L*", "ensemble_E*", "ensemble_e*", "ensemble_periodic", "kappa/k*")
+GEOMETRIES = ("ensemble", "ensemble_L*", "ensemble_E*", "ensemble_e*", "ensemble_periodic", "kappa/k*", "kappa_free/k*")
 
 
 def result_lines(log):

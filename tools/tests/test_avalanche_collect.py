@@ -89,6 +89,23 @@ def test_kappa_reference_row_once_even_without_mu(collect, out):
     assert np.isnan(rows[-1][-1])
 
 
+def test_kappa_free_beside_the_free_ends_set(collect, out):
+    # kappa_free stands beside the free-ends set (ensemble), not the periodic one
+    packing(out, "ensemble", 8.7, 1, 8.3, ([(17, "stable"), (17.5, "uniform")], 17.5, 0.7),
+            ([(13.5, "local"), (14, "uniform")], 14, 0.5), mu70=0.6)
+    k = packing(out, "kappa_free/k0.1", 8.7, 1, 8.3, ([(20, "stable")], 20.5, 0.5),
+                ([(16, "local"), (16.5, "uniform")], 16.5, 0.4), mu70=0.8)
+    os.remove(k / "log.f0")
+    rows = collect.kappa_study(str(out), "kappa_free")
+    assert [(k, H, seed, t0, t70, shift, mu) for k, H, seed, t0, t70, shift, mu in rows] == \
+        [(0.1, 8.7, "1", 17.5, 16.5, 1.0, 0.8), (0.3, 8.7, "1", 17.5, 14.0, 3.5, 0.6)]
+    assert [r[0] for r in collect.kappa_study(str(out))] == [0.1, 0.3], "the periodic study is apart"
+    collect.kappa_figure({"kappa": collect.kappa_study(str(out)), "kappa_free": rows}, str(out), str(out))
+    lines = (out / "kappa.txt").read_text().split("\n")
+    assert "0.1 8.7 1 1 0.8 free_ends" in lines and "0.3 6 1 4 0.6 periodic" in lines
+    assert (out / "kappa_shift.png").read_bytes()[:4] == b"\x89PNG"
+
+
 def test_slope_from_6_d_up(collect, out):
     # add H = 9 d: two packings at 16 and 17 deg; from 6 d up the points are
     # (6, 18.5), (6, 17.5), (9, 16), (9, 17): slope (16.5 - 18) / 3 = -0.5

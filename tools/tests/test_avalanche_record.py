@@ -113,3 +113,18 @@ def test_sets_of_another_contact_law_recorded(record, collect, tmp_path, geometr
     assert record.record(str(out), str(rec)) == 3
     assert sorted(os.listdir(rec / geometry / "H6" / "s1")) == ["log.deposit", "log.f0", "log.f70"]
     assert collect.ensembles(str(rec))[label][6.0][0]["f0"] == (18.5, 0.25)
+
+
+@pytest.mark.parametrize("kset", ["kappa", "kappa_free"])
+def test_kappa_studies_recorded(record, collect, tmp_path, kset):
+    # run_production.sh's kappa (periodic) and kappa_free (free ends) sets
+    # write out/<kset>/k<kappa>; the record keeps them beside their reference
+    # set, and collect.py pairs them the same way from the record
+    out, rec = tmp_path / "out", tmp_path / "rec"
+    reference = collect.KAPPA_SETS[kset][0]
+    packing(out, 1, f70_finished=True, geometry=reference)
+    packing(out, 1, f70_finished=True, geometry=f"{kset}/k0.1")
+    assert record.record(str(out), str(rec)) == 6
+    assert sorted(os.listdir(rec / kset / "k0.1" / "H6" / "s1")) == ["log.deposit", "log.f0", "log.f70"]
+    assert collect.kappa_study(str(rec), kset) == collect.kappa_study(str(out), kset)
+    assert [r[0] for r in collect.kappa_study(str(rec), kset)] == [0.1, 0.3]
