@@ -18,7 +18,8 @@ record.py), fig10_chains_H6, fig3_modes_H6, fig6_9_sigma_H14.4 and, with t_con r
 another hold at 19 deg and H = 6 d, tcon_hold_sigma_H6 (sigma_l of the longest-held run); with the
 runs of `run_production.sh build kappa` (OUT_DIR/kappa/k<kappa>/, periodic) and
 `kappa_free` (OUT_DIR/kappa_free/k<kappa>/, free ends), the tables and the
-figure kappa_shift of the 70 kHz shift against kappa_scale (PNG).
+figures kappa_shift and kappa_shift_free of the 70 kHz shift against
+kappa_scale (PNG).
 """
 import glob
 import json
@@ -478,18 +479,20 @@ def print_kappa(rows, label):
         print(f"| {k:g} | {H:g} | {seed} | {t0:g}° | {t70:g}° | {shift:g}° | {mu:.3f} |")
 
 
-def kappa_figure(rows_by_set, top, figdir):
-    """kappa_shift.png from every kappa_scale study (rows_by_set: kset -> rows
-    of kappa_study)."""
-    if not any(rows_by_set.values()):
+def kappa_figure(rows, kset, top, figdir):
+    """The table OUT/<kset>.txt and the figure kappa_shift<suffix>.png of one
+    kappa_scale study (rows of kappa_study; suffix "" for kappa, "_free" for
+    kappa_free): one figure per study, so that a record holding one of them
+    redraws it without touching the other's."""
+    if not rows:
         return
-    table = os.path.join(top, "kappa.txt")
+    geometry = KAPPA_SETS[kset][1].replace(" ", "_")
+    table = os.path.join(top, f"{kset}.txt")
     with open(table, "w") as f:
-        for kset, rows in rows_by_set.items():
-            geometry = KAPPA_SETS[kset][1].replace(" ", "_")
-            for k, H, seed, t0, t70, shift, mu in rows:
-                f.write(f"{k:g} {H:g} {seed} {shift:g} {mu:g} {geometry}\n")
-    figs.main(["kappa", table, "-o", os.path.join(figdir, "kappa_shift.png"), "--dpi", "80"])
+        for k, H, seed, t0, t70, shift, mu in rows:
+            f.write(f"{k:g} {H:g} {seed} {shift:g} {mu:g} {geometry}\n")
+    name = "kappa_shift" + kset[len("kappa"):] + ".png"
+    figs.main(["kappa", table, "-o", os.path.join(figdir, name), "--dpi", "80"])
 
 
 def print_other_frequencies(by_h):
@@ -512,7 +515,8 @@ def main(top=os.path.join(here, "out"), figdir=os.path.join(here, "figures")):
     for kset, rows in kappa_rows.items():
         print_kappa(rows, KAPPA_SETS[kset][1])
     figures(all_ens, summary, top, figdir)
-    kappa_figure(kappa_rows, top, figdir)
+    for kset, rows in kappa_rows.items():
+        kappa_figure(rows, kset, top, figdir)
     with open(os.path.join(top, "summary.json"), "w") as f:
         json.dump({label: {"rows": rows, "slope0": s0, "slope70": s70} for label, (rows, s0, s70) in summary.items()},
                   f, indent=1, default=float)
