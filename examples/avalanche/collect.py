@@ -181,7 +181,7 @@ KAPPA_SETS = {"kappa": ("ensemble_periodic", "periodic"), "kappa_free": ("ensemb
 
 def kappa_study(top, kset="kappa"):
     """Rows (kappa, H, seed, theta_m 0 Hz, theta_m 70 kHz, shift, mean mu*/mu
-    below theta_m) of the 70 kHz ramps in OUT/<kset>/k<kappa>/H<H>/s<seed>,
+    below theta_m, shift of the first spreading flow) of the 70 kHz ramps in OUT/<kset>/k<kappa>/H<H>/s<seed>,
     each beside the same packing's ramps at the default kappa_scale 0.3 in
     the geometry of KAPPA_SETS[kset]."""
     reference = KAPPA_SETS[kset][0]
@@ -191,12 +191,13 @@ def kappa_study(top, kset="kappa"):
         kappa, H = float(os.path.basename(kdir)[1:]), float(os.path.basename(hdir)[1:])
         ref = os.path.join(top, reference, os.path.basename(hdir), os.path.basename(d))
         t0 = result(os.path.join(ref, "log.f0"))[0]
+        onset0 = flow_onset(os.path.join(ref, "log.f0"))
         for k, path in ((0.3, ref), (kappa, d)):
             log = os.path.join(path, "log.f70")
             if os.path.exists(log) and np.isfinite(result(log)[0]):
                 t70 = result(log)[0]
                 seed = os.path.basename(d)[1:]
-                rows[(k, H, seed)] = (k, H, seed, t0, t70, t0 - t70, last_mu_factor(log))
+                rows[(k, H, seed)] = (k, H, seed, t0, t70, t0 - t70, last_mu_factor(log), onset0 - flow_onset(log))
     return [rows[key] for key in sorted(rows)]
 
 
@@ -473,10 +474,11 @@ def print_kappa(rows, label):
     if not rows:
         return
     print(f"\n### 70 kHz shift against kappa_scale ({label}; packings of the {label} set)\n")
-    print("| kappa_scale | H/d | packing | θ_m 0 kHz | θ_m 70 kHz | shift | mean μ*/μ before θ_m |")
-    print("|---|---|---|---|---|---|---|")
-    for k, H, seed, t0, t70, shift, mu in rows:
-        print(f"| {k:g} | {H:g} | {seed} | {t0:g}° | {t70:g}° | {shift:g}° | {mu:.3f} |")
+    print("| kappa_scale | H/d | packing | θ_m 0 kHz | θ_m 70 kHz | shift | mean μ*/μ before θ_m "
+          "| shift of the first spreading flow |")
+    print("|---|---|---|---|---|---|---|---|")
+    for k, H, seed, t0, t70, shift, mu, onset_shift in rows:
+        print(f"| {k:g} | {H:g} | {seed} | {t0:g}° | {t70:g}° | {shift:g}° | {mu:.3f} | {onset_shift:g}° |")
 
 
 def kappa_figure(rows, kset, top, figdir):
@@ -489,7 +491,7 @@ def kappa_figure(rows, kset, top, figdir):
     geometry = KAPPA_SETS[kset][1].replace(" ", "_")
     table = os.path.join(top, f"{kset}.txt")
     with open(table, "w") as f:
-        for k, H, seed, t0, t70, shift, mu in rows:
+        for k, H, seed, t0, t70, shift, mu, onset_shift in rows:
             f.write(f"{k:g} {H:g} {seed} {shift:g} {mu:g} {geometry}\n")
     name = "kappa_shift" + kset[len("kappa"):] + ".png"
     figs.main(["kappa", table, "-o", os.path.join(figdir, name), "--dpi", "80"])

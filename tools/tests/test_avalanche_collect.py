@@ -71,10 +71,13 @@ def test_ensemble_statistics(collect, out):
 
 def test_kappa_rows_beside_the_default(collect, out):
     rows = collect.kappa_study(str(out))
-    assert [(k, seed, t70, shift) for k, H, seed, t0, t70, shift, mu in rows] == \
+    assert [(k, seed, t70, shift) for k, H, seed, t0, t70, shift, mu, onset in rows] == \
         [(0.1, "1", 17.5, 1.0), (0.3, "1", 14.5, 4.0)]
-    mu = {k: m for k, *_, m in rows}
+    mu = {r[0]: r[6] for r in rows}
     assert mu == {0.1: 0.9, 0.3: 0.6}, "mean mu*/mu of the last angle before theta_m"
+    # first spreading flow: 0 kHz 18.5 (uniform at once after a stable 18);
+    # 70 kHz 17.5 at 0.1 and 14.5 at 0.3 (a local 14 is no flow)
+    assert [r[-1] for r in rows] == [1.0, 4.0]
 
 
 def test_kappa_reference_row_once_even_without_mu(collect, out):
@@ -85,8 +88,8 @@ def test_kappa_reference_row_once_even_without_mu(collect, out):
                     ([(theta - 0.5, "stable"), (theta, "uniform")], theta, 0.3))
         os.remove(k / "log.f0")
     rows = [r for r in collect.kappa_study(str(out)) if r[1] == 3.0]
-    assert [(k, shift) for k, H, seed, t0, t70, shift, mu in rows] == [(0.1, 2.5), (0.2, 3.5), (0.3, 4.5)]
-    assert np.isnan(rows[-1][-1])
+    assert [(k, shift) for k, H, seed, t0, t70, shift, mu, onset in rows] == [(0.1, 2.5), (0.2, 3.5), (0.3, 4.5)]
+    assert np.isnan(rows[-1][6])
 
 
 def test_kappa_free_beside_the_free_ends_set(collect, out):
@@ -97,8 +100,7 @@ def test_kappa_free_beside_the_free_ends_set(collect, out):
                 ([(16, "local"), (16.5, "uniform")], 16.5, 0.4), mu70=0.8)
     os.remove(k / "log.f0")
     rows = collect.kappa_study(str(out), "kappa_free")
-    assert [(k, H, seed, t0, t70, shift, mu) for k, H, seed, t0, t70, shift, mu in rows] == \
-        [(0.1, 8.7, "1", 17.5, 16.5, 1.0, 0.8), (0.3, 8.7, "1", 17.5, 14.0, 3.5, 0.6)]
+    assert rows == [(0.1, 8.7, "1", 17.5, 16.5, 1.0, 0.8, 1.0), (0.3, 8.7, "1", 17.5, 14.0, 3.5, 0.6, 3.5)]
     assert [r[0] for r in collect.kappa_study(str(out))] == [0.1, 0.3], "the periodic study is apart"
     collect.kappa_figure(rows, "kappa_free", str(out), str(out))
     assert (out / "kappa_free.txt").read_text() == "0.1 8.7 1 1 0.8 free_ends\n0.3 8.7 1 3.5 0.6 free_ends\n"
