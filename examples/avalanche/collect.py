@@ -183,13 +183,19 @@ def kappa_study(top, kset="kappa"):
     """Rows (kappa, H, seed, theta_m 0 Hz, theta_m 70 kHz, shift, mean mu*/mu
     below theta_m, shift of the first spreading flow) of the 70 kHz ramps in OUT/<kset>/k<kappa>/H<H>/s<seed>,
     each beside the same packing's ramps at the default kappa_scale 0.3 in
-    the geometry of KAPPA_SETS[kset]."""
+    the geometry of KAPPA_SETS[kset].  A packing whose deposit differs from
+    the reference's (grains, base, H, length of log.deposit) is not the same
+    packing: it is left out, with a note on stderr."""
     reference = KAPPA_SETS[kset][0]
     rows = {}                 # (kappa, H, seed) -> row: the reference ramps appear once
     for d in sorted(glob.glob(os.path.join(top, kset, "k*", "H*", "s*"))):
         kdir, hdir = os.path.dirname(os.path.dirname(d)), os.path.dirname(d)
         kappa, H = float(os.path.basename(kdir)[1:]), float(os.path.basename(hdir)[1:])
         ref = os.path.join(top, reference, os.path.basename(hdir), os.path.basename(d))
+        if not os.path.exists(os.path.join(ref, "log.deposit")) or \
+                deposit(os.path.join(d, "log.deposit")) != deposit(os.path.join(ref, "log.deposit")):
+            print(f"collect: {d} left out: its deposit is not that of {ref}", file=sys.stderr)
+            continue
         t0 = result(os.path.join(ref, "log.f0"))[0]
         onset0 = flow_onset(os.path.join(ref, "log.f0"))
         for k, path in ((0.3, ref), (kappa, d)):

@@ -108,6 +108,15 @@ def test_kappa_free_beside_the_free_ends_set(collect, out):
     assert not (out / "kappa_shift.png").exists(), "the periodic study's figure is left alone"
 
 
+def test_kappa_packing_of_another_deposit_left_out(collect, out, capsys):
+    # the same seed deposited into another layer is not the reference packing
+    k = packing(out, "kappa/k0.2", 6, 2, 6.3, ([(18, "stable")], 18.5, 0.5),
+                ([(16, "local"), (16.5, "uniform")], 16.5, 0.4))
+    os.remove(k / "log.f0")
+    assert [r[:3] for r in collect.kappa_study(str(out))] == [(0.1, 6.0, "1"), (0.3, 6.0, "1")]
+    assert "kappa/k0.2/H6/s2 left out: its deposit is not that of" in capsys.readouterr().err
+
+
 def test_slope_from_6_d_up(collect, out):
     # add H = 9 d: two packings at 16 and 17 deg; from 6 d up the points are
     # (6, 18.5), (6, 17.5), (9, 16), (9, 17): slope (16.5 - 18) / 3 = -0.5
