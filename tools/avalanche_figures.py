@@ -32,6 +32,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 
 import avalanche as av  # noqa: E402
 from lammps_output import read_ave_time_vector, read_dump  # noqa: E402
@@ -131,11 +132,13 @@ def fig_thetam(a):
 
 def fig_kappa(a):
     """The 70 kHz shift against kappa_scale, from lines "kappa H seed shift
-    mu_factor geometry" (one per 70 kHz ramp; geometry "periodic" or
-    "free_ends"): every ramp, the mean at each kappa for each H and geometry,
-    and paper 000's shift of about 2 deg as a band."""
-    t = np.atleast_2d(np.loadtxt(a.table, usecols=(0, 1, 3, 4)))
-    geometry = np.atleast_1d(np.loadtxt(a.table, usecols=5, dtype=str))
+    mu_factor onset_shift geometry" (one per 70 kHz ramp; onset_shift: the
+    shift of the first spreading flow; geometry "periodic" or "free_ends"):
+    every ramp (filled: theta_m, open: first spreading flow), the mean of
+    theta_m's shift at each kappa for each H and geometry, and paper 000's
+    shift of about 2 deg as a band."""
+    t = np.atleast_2d(np.loadtxt(a.table, usecols=(0, 1, 3, 4, 5)))
+    geometry = np.atleast_1d(np.loadtxt(a.table, usecols=6, dtype=str))
     fig, ax = plt.subplots(figsize=(4.5, 3.4))
     ax.axhspan(1.5, 2.5, color="0.85", label="paper 000: ≈ 2°")
     ax.axhline(0, color="0.5", lw=0.6)
@@ -145,8 +148,13 @@ def fig_kappa(a):
         kappas = np.unique(rows[:, 0])
         ax.plot(rows[:, 0], rows[:, 2], "o", color=f"C{k}", alpha=0.6,
                 label=f"H = {H:g} d, {g.replace('_', ' ')}, one ramp each")
+        ax.plot(rows[:, 0], rows[:, 4], "o", mfc="none", color=f"C{k}", alpha=0.6,
+                label="first spreading flow")
         ax.plot(kappas, [rows[rows[:, 0] == x, 2].mean() for x in kappas], "-", color=f"C{k}", label="mean")
     ax.set_xscale("log")
+    ax.xaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+    ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    ax.set_xticks(np.unique(t[:, 0]))
     ax.set_xlabel("kappa_scale")
     ax.set_ylabel(r"$\theta_m$(0 kHz) $-$ $\theta_m$(70 kHz) (°)")
     ax.legend(fontsize=7)

@@ -498,7 +498,7 @@ def kappa_figure(rows, kset, top, figdir):
     table = os.path.join(top, f"{kset}.txt")
     with open(table, "w") as f:
         for k, H, seed, t0, t70, shift, mu, onset_shift in rows:
-            f.write(f"{k:g} {H:g} {seed} {shift:g} {mu:g} {geometry}\n")
+            f.write(f"{k:g} {H:g} {seed} {shift:g} {mu:g} {onset_shift:g} {geometry}\n")
     name = "kappa_shift" + kset[len("kappa"):] + ".png"
     figs.main(["kappa", table, "-o", os.path.join(figdir, name), "--dpi", "80"])
 

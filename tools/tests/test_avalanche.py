@@ -378,8 +378,8 @@ def test_figures_from_synthetic_runs(tmp_path):
     table7 = tmp_path / "thetam.txt"
     table7.write_text("3 20 1.0 14.5 0.5 20 14.5\n6 19.5 1.2 15 0.7 nan nan\n")
     tablek = tmp_path / "kappa.txt"
-    tablek.write_text("0.1 6 1 0.5 0.9 periodic\n0.3 6 1 5 0.6 periodic\n0.3 6 2 4 0.6 periodic\n"
-                      "0.1 8.7 1 1.5 0.8 free_ends\n0.3 8.7 1 3 0.6 free_ends\n")
+    tablek.write_text("0.1 6 1 0.5 0.9 1 periodic\n0.3 6 1 5 0.6 5 periodic\n0.3 6 2 4 0.6 4.5 periodic\n"
+                      "0.1 8.7 1 1.5 0.8 2 free_ends\n0.3 8.7 1 3 0.6 nan free_ends\n")
     table8 = tmp_path / "tcon.txt"
     table8.write_text("0kHz 19.5 0.2\n0kHz 20.5 0.1\n70kHz 15 0.09\npaper_0kHz 19 1.15\n")
     hist = tmp_path / "modes.hist"

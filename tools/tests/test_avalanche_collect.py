@@ -103,7 +103,7 @@ def test_kappa_free_beside_the_free_ends_set(collect, out):
     assert rows == [(0.1, 8.7, "1", 17.5, 16.5, 1.0, 0.8, 1.0), (0.3, 8.7, "1", 17.5, 14.0, 3.5, 0.6, 3.5)]
     assert [r[0] for r in collect.kappa_study(str(out))] == [0.1, 0.3], "the periodic study is apart"
     collect.kappa_figure(rows, "kappa_free", str(out), str(out))
-    assert (out / "kappa_free.txt").read_text() == "0.1 8.7 1 1 0.8 free_ends\n0.3 8.7 1 3.5 0.6 free_ends\n"
+    assert (out / "kappa_free.txt").read_text() == "0.1 8.7 1 1 0.8 1 free_ends\n0.3 8.7 1 3.5 0.6 3.5 free_ends\n"
     assert (out / "kappa_shift_free.png").read_bytes()[:4] == b"\x89PNG"
     assert not (out / "kappa_shift.png").exists(), "the periodic study's figure is left alone"
 
