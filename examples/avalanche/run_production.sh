@@ -20,8 +20,9 @@
 #             1 and 2 of the periodic set, kappa_scale 0.1, 0.2 and 1 (0.3 is
 #             the periodic set), in out/kappa/k<kappa>
 #   kappa_free  the same with paper 000's geometry at H/d = 8.7 (free ends,
-#             400 d): packings 1 and 2 of the set free, kappa_scale 0.1 and 0.2,
-#             and packing 1 at 1 (0.3 is the set free), in out/kappa_free/k<kappa>
+#             400 d): packings 1 and 2 of the set free at kappa_scale 0.1 and
+#             0.2, packings 3 and 4 at 0.1 (0.3 is the set free), in
+#             out/kappa_free/k<kappa>
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${1:-$here/../../build}; shift || true
@@ -88,7 +89,9 @@ for set in "${sets[@]}"; do
           AVALANCHE_KAPPA=$k AVALANCHE_OUT=$here/out/kappa_free/k$k "$E" "$build" 8.7 "$s" 70e3
         done
       done
-      AVALANCHE_KAPPA=1 AVALANCHE_OUT=$here/out/kappa_free/k1 "$E" "$build" 8.7 1 70e3 ;;
+      for s in 3 4; do
+        AVALANCHE_KAPPA=0.1 AVALANCHE_OUT=$here/out/kappa_free/k0.1 "$E" "$build" 8.7 "$s" 70e3
+      done ;;
     *) echo "run_production: unknown set $set (periodic, tcon, free, more, kappa, kappa_free)" >&2; exit 1 ;;
   esac
 done
