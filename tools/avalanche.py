@@ -38,6 +38,8 @@ Units are those of the run (SI for examples/avalanche).  Command line:
     python3 tools/avalanche.py profile run.dump run.contacts --theta 10.5 [--dz 2] [--obs 0.3 0.7]
                                                                 mu*/mu against the height
     python3 tools/avalanche.py spectrum run.dump run.contacts  frequency quantiles of the network
+    python3 tools/avalanche.py band modes.hist [--drive 70e3]  where the drive falls in a density of
+                                                                states (in.modes, method dense or kpm)
                                      [--frame 0] [--above 70e3]  and the fraction of modes above 70 kHz
 """
 import argparse
@@ -46,7 +48,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from lammps_output import Snapshot, read_dump
+from lammps_output import Snapshot, read_ave_time_vector, read_dump
 
 EPS_E = 3e-8      # paper 000: E_k/E_t threshold of a stable state
 EPS_SIGMA1 = 0.3  # paper 000: sigma_1 (top half) of a uniform flow
@@ -466,6 +468,22 @@ def fraction_above(frequencies, f):
     return float((nonzero_modes(frequencies) > f).mean())
 
 
+def band_from_density(centres, density, drive, shares=(0.99, 0.999)):
+    """Where a drive falls in a density of states given on equal bins
+    (compute vibration/modes ... bins, e.g. method kpm on a layer too large
+    for the dense eigensolver): the share of the modes below the drive, and
+    the frequencies below which the given shares of the modes lie (the top
+    of the band).  The density is per unit frequency at the bin centres and
+    taken uniform within a bin."""
+    width = centres[1] - centres[0]
+    upper = centres + width / 2.0
+    cumulative = np.concatenate(([0.0], np.cumsum(np.clip(density, 0.0, None) * width)))
+    cumulative /= cumulative[-1]
+    edges = np.concatenate(([upper[0] - width], upper))
+    below = float(np.interp(drive, edges, cumulative))
+    return below, [float(np.interp(s, cumulative, edges)) for s in shares]
+
+
 # ---------------------------------------------------------------- command line
 
 def main(argv=None):
@@ -502,6 +520,11 @@ def main(argv=None):
     sg.add_argument("--theta", type=float, nargs="*", default=None, help="angles to report (default: all)")
     sg.add_argument("--per-frame", action="store_true", help="one line per dump frame (first column the "
                     "timestep) instead of the medians of each angle")
+    bd = sub.add_parser("band", help="where a drive falls in a density of states (histogram file of "
+                        "examples/avalanche/in.modes, any method)")
+    bd.add_argument("hist")
+    bd.add_argument("--drive", type=float, default=70e3)
+    bd.add_argument("--shares", type=float, nargs="+", default=[0.99, 0.999])
     sp = sub.add_parser("spectrum", help="eigenfrequencies of the contact network")
     sp.add_argument("dump")
     sp.add_argument("contacts")
@@ -556,6 +579,11 @@ def main(argv=None):
         else:
             for theta, parts in sigma1_parts_by_angle(frames, a.obs, a.dx, a.theta):
                 print(line(parts["frames"], theta, parts))
+    elif a.cmd == "band":
+        rows = read_ave_time_vector(a.hist)[-1][1]              # last block: centre, density[, error]
+        below, tops = band_from_density(rows[:, 0], rows[:, 1], a.drive, a.shares)
+        print(f"{below:.2%} of the modes below {a.drive:g}; " + ", ".join(
+            f"{s:.1%} below {f:.4g}" for s, f in zip(a.shares, tops)))
     elif a.cmd == "spectrum":
         atoms = read_dump(a.dump)[a.frame]
         f = network_spectrum(atoms, contacts_at(a.contacts, atoms.timestep))
