@@ -3,7 +3,10 @@ long): the scans run through LAMMPS's Python module and give what the
 physics fixes -- more lubrication for a larger amplitude, no lowered contact
 with the base for paper 000's source (its base contacts are not in the
 network), some for the rough-base source, and spectrum and sound speed
-scaling as kappa_scale^(1/3) (Hertz stiffness at fixed force: k ~ kappa^(2/3))."""
+scaling as kappa_scale^(1/3) (Hertz stiffness at fixed force: k ~ kappa^(2/3)).
+in.modes on the same layer: the density of states of the kernel polynomial
+method (method kpm, for layers too large for the dense solver) puts the drive
+where the dense eigenfrequencies do (tools/avalanche.py band)."""
 import json
 import os
 import subprocess
@@ -17,12 +20,18 @@ TOOLS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "to
 
 
 @pytest.fixture(scope="module")
-def scan(tmp_path_factory):
+def layer(tmp_path_factory):
     work = tmp_path_factory.mktemp("calibration")
     done = subprocess.run([LMP, "-in", os.path.join(HERE, "in.deposit"), "-var", "dir", HERE, "-var", "H", "3",
                            "-var", "L", "20", "-var", "out", "deposit.restart", "-log", "log.deposit",
                            "-screen", "none", "-nocite"], cwd=work, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stdout[-2000:]
+    return work
+
+
+@pytest.fixture(scope="module")
+def scan(layer):
+    work = layer
     done = subprocess.run([sys.executable, os.path.join(HERE, "calibrate.py"), "deposit.restart", "scan.json",
                            "--quick"], cwd=work, capture_output=True, text=True, timeout=600)
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
@@ -64,3 +73,34 @@ def test_figure(scan):
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr[-2000:]
     assert (work / "calibration.png").stat().st_size > 10000
+
+
+def modes(work, method, tag):
+    """in.modes on the deposit: the histogram file and the log's last line."""
+    done = subprocess.run([LMP, "-in", os.path.join(HERE, "in.modes"), "-var", "dir", HERE, "-var", "restart",
+                           "deposit.restart", "-var", "method", method, "-var", "tag", tag, "-var", "fmax", "200e3",
+                           "-var", "nbins", "200", "-var", "moments", "1024", "-log", f"log.{tag}",
+                           "-screen", "none", "-nocite"], cwd=work, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stdout[-2000:]
+    return work / f"{tag}.hist", [line for line in open(work / f"log.{tag}") if line.startswith("modes ")][-1]
+
+
+def test_kpm_band_against_the_dense_modes(layer):
+    sys.path.insert(0, TOOLS)
+    import avalanche as av
+    from lammps_output import read_ave_time_vector
+    dense_hist, dense_line = modes(layer, "dense", "dense")
+    kpm_hist, kpm_line = modes(layer, "kpm", "kpm")
+    assert "highest mode" in dense_line and "rattler DOFs (kpm)" in kpm_line
+    highest = float(dense_line.split("highest mode ")[1].split()[0])
+    dense = read_ave_time_vector(dense_hist)[-1][1]
+    kpm = read_ave_time_vector(kpm_hist)[-1][1]
+    # a drive at the dense spectrum's median, 99.9 % of the modes below the
+    # top of the band (the dense modes lie within one bin of the highest)
+    _, (median, top_dense) = av.band_from_density(dense[:, 0], dense[:, 1], 0.0, (0.5, 0.999))
+    share_kpm, (top_kpm,) = av.band_from_density(kpm[:, 0], kpm[:, 1], median, (0.999,))
+    print(f"median {median:.4g} Hz: kpm share below {share_kpm:.3f}; top dense {top_dense:.4g}, "
+          f"kpm {top_kpm:.4g}, highest mode {highest:.4g} Hz")
+    assert abs(top_dense - highest) <= 1e3
+    assert share_kpm == pytest.approx(0.5, abs=0.05)
+    assert top_kpm == pytest.approx(highest, rel=0.1)
