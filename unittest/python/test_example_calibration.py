@@ -31,11 +31,10 @@ def layer(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def scan(layer):
-    work = layer
     done = subprocess.run([sys.executable, os.path.join(HERE, "calibrate.py"), "deposit.restart", "scan.json",
-                           "--quick"], cwd=work, capture_output=True, text=True, timeout=600)
+                           "--quick"], cwd=layer, capture_output=True, text=True, timeout=600)
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
-    return work, json.load(open(work / "scan.json"))
+    return layer, json.load(open(layer / "scan.json"))
 
 
 def test_more_amplitude_more_lubrication(scan):
@@ -99,8 +98,6 @@ def test_kpm_band_against_the_dense_modes(layer):
     # top of the band (the dense modes lie within one bin of the highest)
     _, (median, top_dense) = av.band_from_density(dense[:, 0], dense[:, 1], 0.0, (0.5, 0.999))
     share_kpm, (top_kpm,) = av.band_from_density(kpm[:, 0], kpm[:, 1], median, (0.999,))
-    print(f"median {median:.4g} Hz: kpm share below {share_kpm:.3f}; top dense {top_dense:.4g}, "
-          f"kpm {top_kpm:.4g}, highest mode {highest:.4g} Hz")
     assert abs(top_dense - highest) <= 1e3
     assert share_kpm == pytest.approx(0.5, abs=0.05)
-    assert top_kpm == pytest.approx(highest, rel=0.1)
+    assert top_kpm == pytest.approx(highest, rel=0.03), "measured: 1 % (60.9 against 60.3 kHz)"
