@@ -155,23 +155,45 @@ def ensembles(top):
     return out
 
 
-ANGLE_MU = re.compile(r"^angle +([0-9.]+) deg: (\w+) .* mean mu\*/mu ([0-9.]+)")
+ANGLE_LINE = re.compile(r"^angle +([0-9.]+) deg: (\w+) after ([0-9.]+) s .* mean mu\*/mu ([0-9.]+)")
+
+
+def angle_lines(log):
+    """[(angle, state, time followed (s), mean mu*/mu at its end)] of the
+    tested angles of an in.avalanche log, in order."""
+    return [(float(m.group(1)), m.group(2), float(m.group(3)), float(m.group(4)))
+            for m in map(ANGLE_LINE.match, open(log)) if m]
 
 
 def flow_onset(log):
     """The first angle of a ramp that ended with a flow: partial (more than
     half of the observed grains still mobile after 0.1 + tfollow s, not
     uniform) or uniform; nan if none.  It is at or below theta_m."""
-    for m in map(ANGLE_MU.match, open(log)):
-        if m and m.group(2) in ("partial", "uniform"):
-            return float(m.group(1))
+    for theta, state, _, _ in angle_lines(log):
+        if state in ("partial", "uniform"):
+            return theta
     return np.nan
 
 
 def last_mu_factor(log):
     """mean mu*/mu at the end of the last angle before theta_m (nan if none)."""
-    values = [float(m.group(3)) for m in map(ANGLE_MU.match, open(log)) if m and m.group(2) != "uniform"]
+    values = [mu for _, state, _, mu in angle_lines(log) if state != "uniform"]
     return values[-1] if values else np.nan
+
+
+def first_angle(log):
+    """The first tested angle of a ramp (nan if none)."""
+    lines = angle_lines(log)
+    return lines[0][0] if lines else np.nan
+
+
+def time_before_onset(log):
+    """Simulated time (s) the layer was followed at the tested angles before
+    the first spreading flow (nan without a flow); under 70 kHz it creeps
+    all that time (the pre-ramp and its hold, at most tsettle, come on top)."""
+    lines = angle_lines(log)
+    spreading = [i for i, (_, state, _, _) in enumerate(lines) if state in ("partial", "uniform")]
+    return sum(t for _, _, t, _ in lines[:spreading[0]]) if spreading else np.nan
 
 
 # the kappa_scale studies of run_production.sh: directory -> (the geometry
@@ -179,32 +201,66 @@ def last_mu_factor(log):
 KAPPA_SETS = {"kappa": ("ensemble_periodic", "periodic"), "kappa_free": ("ensemble", "free ends")}
 
 
-def kappa_study(top, kset="kappa"):
-    """Rows (kappa, H, seed, theta_m 0 Hz, theta_m 70 kHz, shift, mean mu*/mu
-    below theta_m, shift of the first spreading flow) of the 70 kHz ramps in OUT/<kset>/k<kappa>/H<H>/s<seed>,
-    each beside the same packing's ramps at the default kappa_scale 0.3 in
-    the geometry of KAPPA_SETS[kset].  A packing whose deposit differs from
+def paired_packings(top, study, prefix, reference):
+    """(value, H, seed, packing dir, reference dir) for every packing
+    OUT/<study>/<prefix><value>/H<H>/s<seed> of a study beside a set: the
+    same packing in OUT/<reference>.  A packing whose deposit differs from
     the reference's (grains, base, H, length of log.deposit) is not the same
     packing: it is left out, with a note on stderr."""
-    reference = KAPPA_SETS[kset][0]
-    rows = {}                 # (kappa, H, seed) -> row: the reference ramps appear once
-    for d in sorted(glob.glob(os.path.join(top, kset, "k*", "H*", "s*"))):
-        kdir, hdir = os.path.dirname(os.path.dirname(d)), os.path.dirname(d)
-        kappa, H = float(os.path.basename(kdir)[1:]), float(os.path.basename(hdir)[1:])
+    pairs = []
+    for d in sorted(glob.glob(os.path.join(top, study, prefix + "*", "H*", "s*"))):
+        vdir, hdir = os.path.dirname(os.path.dirname(d)), os.path.dirname(d)
+        value, H = float(os.path.basename(vdir)[len(prefix):]), float(os.path.basename(hdir)[1:])
         ref = os.path.join(top, reference, os.path.basename(hdir), os.path.basename(d))
         if not os.path.exists(os.path.join(ref, "log.deposit")) or \
                 deposit(os.path.join(d, "log.deposit")) != deposit(os.path.join(ref, "log.deposit")):
             print(f"collect: {d} left out: its deposit is not that of {ref}", file=sys.stderr)
             continue
+        pairs.append((value, H, os.path.basename(d)[1:], d, ref))
+    return pairs
+
+
+def kappa_study(top, kset="kappa"):
+    """Rows (kappa, H, seed, theta_m 0 Hz, theta_m 70 kHz, shift, mean mu*/mu
+    below theta_m, shift of the first spreading flow) of the 70 kHz ramps in OUT/<kset>/k<kappa>/H<H>/s<seed>,
+    each beside the same packing's ramps at the default kappa_scale 0.3 in
+    the geometry of KAPPA_SETS[kset] (paired_packings)."""
+    rows = {}                 # (kappa, H, seed) -> row: the reference ramps appear once
+    for kappa, H, seed, d, ref in paired_packings(top, kset, "k", KAPPA_SETS[kset][0]):
         t0 = result(os.path.join(ref, "log.f0"))[0]
         onset0 = flow_onset(os.path.join(ref, "log.f0"))
         for k, path in ((0.3, ref), (kappa, d)):
             log = os.path.join(path, "log.f70")
             if os.path.exists(log) and np.isfinite(result(log)[0]):
                 t70 = result(log)[0]
-                seed = os.path.basename(d)[1:]
                 rows[(k, H, seed)] = (k, H, seed, t0, t70, t0 - t70, last_mu_factor(log), onset0 - flow_onset(log))
     return [rows[key] for key in sorted(rows)]
+
+
+# the switch-on study of run_production.sh (set switch_on): 70 kHz ramps of
+# packings of the free-ends set tilted at rest without ultrasound to an angle
+# and driven from 0.5 deg higher on (AVALANCHE_SWITCH_ON), in
+# OUT/switch_on/at<angle>/H<H>/s<seed>, beside the set's own ramps
+SWITCH_ON_SET = ("switch_on", "at", "ensemble")
+
+
+def switch_on_study(top):
+    """Rows (H, seed, first tested angle, theta_m 0 Hz, theta_m 70 kHz, first
+    spreading flow at 70 kHz, time followed at the angles before it (s), mean mu*/mu
+    before theta_m) of the 70 kHz ramps of the switch-on study and of the same
+    packings' ramps in the free-ends set (ultrasound on from the pre-ramp),
+    sorted by H, packing and first angle: does the creep at the angles
+    before the flow lower theta_m?"""
+    rows = {}
+    for _, H, seed, d, ref in paired_packings(top, *SWITCH_ON_SET):
+        t0 = result(os.path.join(ref, "log.f0"))[0]
+        for path in (ref, d):
+            log = os.path.join(path, "log.f70")
+            if os.path.exists(log) and np.isfinite(result(log)[0]):
+                start = first_angle(log)
+                rows[(H, seed, start)] = (H, seed, start, t0, result(log)[0], flow_onset(log),
+                                          time_before_onset(log), last_mu_factor(log))
+    return [rows[key] for key in sorted(rows, key=lambda k: (k[0], int(k[1]), k[2]))]
 
 
 def mean_sd(values):
@@ -503,6 +559,19 @@ def kappa_figure(rows, kset, top, figdir):
     figs.main(["kappa", table, "-o", os.path.join(figdir, name), "--dpi", "80"])
 
 
+def print_switch_on(rows):
+    if not rows:
+        return
+    print("\n### 70 kHz switched on at the first tested angle, after a tilt at rest without it "
+          "(free ends; beside the ramps of the free-ends set)\n")
+    print("| H/d | packing | first tested angle | θ_m 0 kHz | θ_m 70 kHz | first spreading flow 70 kHz "
+          "| time followed before it (s) | mean μ*/μ before θ_m |")
+    print("|---|---|---|---|---|---|---|---|")
+    for H, seed, start, t0, t70, onset, creep, mu in rows:
+        print(f"| {H:g} | {seed} | {start:g}° | {num(t0)}° | {t70:g}° | {num(onset)}° | {num(creep, '.2f')} "
+              f"| {num(mu, '.3f')} |")
+
+
 def print_other_frequencies(by_h):
     rows = [(H, p, r) for H, packs in sorted(by_h.items()) for p in packs for r in p["other"]]
     if not rows:
@@ -522,6 +591,7 @@ def main(top=os.path.join(here, "out"), figdir=os.path.join(here, "figures")):
     kappa_rows = {kset: kappa_study(top, kset) for kset in KAPPA_SETS}
     for kset, rows in kappa_rows.items():
         print_kappa(rows, KAPPA_SETS[kset][1])
+    print_switch_on(switch_on_study(top))
     figures(all_ens, summary, top, figdir)
     for kset, rows in kappa_rows.items():
         kappa_figure(rows, kset, top, figdir)

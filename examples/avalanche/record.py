@@ -21,7 +21,8 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 KEPT = ("deposit:", "avalanche ", "angle ", "Total wall time:")
-GEOMETRIES = ("ensemble", "ensemble_L*", "ensemble_E*", "ensemble_e*", "ensemble_periodic", "kappa/k*", "kappa_free/k*")
+GEOMETRIES = ("ensemble", "ensemble_L*", "ensemble_E*", "ensemble_e*", "ensemble_periodic", "kappa/k*", "kappa_free/k*",
+              "switch_on/at*")
 
 
 def result_lines(log):

@@ -33,6 +33,10 @@
 #   AVALANCHE_KAPPA (kappa_scale of the vibration network, default 0.3),
 #   AVALANCHE_TFOLLOW (s, default 1.2 as paper 000), AVALANCHE_TSETTLE (s, 0.5),
 #   AVALANCHE_THETA0 (first tested angle; default 10 deg, 4 deg for H > 10 d at 70 kHz),
+#   AVALANCHE_SWITCH_ON (deg; a ramp with ultrasound only: the layer is first
+#   tilted without it to this angle, the pre-ramp and that one tested angle at
+#   0 Hz, log.quiet; it must be stable there, and the ramp goes on from its
+#   state at rest, ultrasound on, 0.5 deg higher: no creep before),
 #   AVALANCHE_PIECE (simulated seconds per LAMMPS process, "auto": 20000 / atoms,
 #   about 20 min on 2 cores at 70 kHz, plus the angle under way; 0: one process),
 #   AVALANCHE_MAXPIECES (processes per ramp in one call; default: until the ramp ends).
@@ -146,7 +150,21 @@ while [ $# -gt 0 ]; do
     else
       rm -f "$tag.resume"
       theta0=${AVALANCHE_THETA0:-$(awk -v h="$H" -v f="$f" 'BEGIN{print (h > 10 && f > 0 ? 4 : 10)}')}
-      lmprun -in "$here/in.avalanche" "${common[@]}" -var restart deposit.restart -var theta0 "$theta0" -log "log.$tag"
+      start=(-var restart deposit.restart)
+      if [ -n "${AVALANCHE_SWITCH_ON:-}" ] && [ "$f" != 0 ]; then
+        on=$AVALANCHE_SWITCH_ON
+        lmprun -in "$here/in.avalanche" -var dir "$here" -var tag quiet -var freq 0 -var kappa "$kappa" \
+          -var source "$source" -var tsettle "$tsettle" -var obslo "$obslo" -var obshi "$obshi" -var dumpevery 0 \
+          -var restart deposit.restart -var theta0 "$on" -var thetamax "$on" -log log.quiet
+        if ! awk -v a="$on" '$1 == "angle" && $2 + 0 == a + 0 && ($4 == "stable" || $4 == "stopped") {ok = 1}
+                              END {exit !ok}' log.quiet; then
+          echo "run_ensemble: H$H s$seed: the layer is not at rest at $on deg without ultrasound (log.quiet); AVALANCHE_SWITCH_ON must lie below theta_m at 0 Hz" >&2
+          exit 1
+        fi
+        start=(-var restart quiet.static.restart -var pre 0)
+        theta0=$(awk -v a="$on" 'BEGIN{printf "%.2f", a + 0.5}')
+      fi
+      lmprun -in "$here/in.avalanche" "${common[@]}" "${start[@]}" -var theta0 "$theta0" -log "log.$tag"
     fi
     echo $((SECONDS - t0)) >> "$tag.wall"
     npiece=$((npiece + 1))

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 
-def angle(theta, state, mu=1.0):
-    return (f"angle {theta:5.2f} deg: {state} after 0.100 s  max E_k/E_t 1e-09  max mobile fraction 0.000  "
+def angle(theta, state, mu=1.0, followed=0.1):
+    return (f"angle {theta:5.2f} deg: {state} after {followed:.3f} s  max E_k/E_t 1e-09  max mobile fraction 0.000  "
             f"sigma1 1 sigma2 1  mean mu*/mu {mu:.3f}\n")
 
 
@@ -115,6 +115,48 @@ def test_kappa_packing_of_another_deposit_left_out(collect, out, capsys):
     os.remove(k / "log.f0")
     assert [r[:3] for r in collect.kappa_study(str(out))] == [(0.1, 6.0, "1"), (0.3, 6.0, "1")]
     assert "kappa/k0.2/H6/s2 left out: its deposit is not that of" in capsys.readouterr().err
+
+
+def creeping_ramp(path, start, onset, theta_m):
+    """A 70 kHz log of a ramp from `start` that creeps (local, 1.3 s) until a
+    flow spreads at `onset` (partial, 1.3 s) and becomes uniform at theta_m."""
+    angles = np.arange(start, theta_m + 0.25, 0.5)
+    lines = [f"avalanche f70: pre-ramp to {start - 0.5:.2f} deg done at t = 0.820 s, "
+             "E_k/E_t = 5.87e-05 (NOT at rest after tsettle)\n"]
+    lines += [angle(th, "local" if th < onset else "partial" if th < theta_m else "uniform", 0.6,
+                    1.3 if th < theta_m else 0.3) for th in angles]
+    lines.append(f"avalanche f70: freq 70e3 Hz  theta_m = {theta_m:.2f} deg  t_con = 0.290 s\n")
+    (path / "log.f70").write_text("".join(lines))
+
+
+def test_switch_on_study_beside_the_free_ends_set(collect, out, capsys):
+    # the same packing ramped at 70 kHz from 4 deg (the set's) and, tilted at
+    # rest to 9.5 deg without ultrasound, from 10 deg (the study's): first
+    # angle, theta_m, first spreading flow, and the time followed before that
+    # flow (1.3 s per creeping angle)
+    ref = packing(out, "ensemble", 14.4, 1, 13.9, ([(15, "uniform")], 15, 0.6), ([], 0, 0))
+    creeping_ramp(ref, 4.0, 10.0, 10.5)
+    late = packing(out, "switch_on/at9.5", 14.4, 1, 13.9, ([(15, "uniform")], 15, 0.6), ([], 0, 0))
+    os.remove(late / "log.f0")
+    creeping_ramp(late, 10.0, 10.5, 11.5)
+    other = packing(out, "switch_on/at9.5", 14.4, 2, 14.2, ([(15, "uniform")], 15, 0.6), ([], 0, 0))
+    creeping_ramp(other, 10.0, 10.0, 10.0)
+    rows = collect.switch_on_study(str(out))
+    assert [r[:6] for r in rows] == [(14.4, "1", 4.0, 15.0, 10.5, 10.0), (14.4, "1", 10.0, 15.0, 11.5, 10.5)]
+    assert rows[0][6] == pytest.approx(12 * 1.3) and rows[1][6] == pytest.approx(1.3)
+    assert rows[0][7] == 0.6
+    assert "switch_on/at9.5/H14.4/s2 left out: its deposit is not that of" in capsys.readouterr().err
+    collect.print_switch_on(rows)
+    assert "| 14.4 | 1 | 10° | 15° | 11.5° | 10.5° | 1.30 | 0.600 |" in capsys.readouterr().out
+
+
+def test_time_before_onset_needs_a_flow(collect, out):
+    path = out / "ensemble_periodic" / "H3" / "s1"
+    assert collect.time_before_onset(str(path / "log.f70")) == pytest.approx(0.1), "one local angle"
+    creeping_ramp(path, 10.0, 30.0, 12.0)
+    (path / "log.f70").write_text((path / "log.f70").read_text().replace("uniform", "local"))
+    assert np.isnan(collect.time_before_onset(str(path / "log.f70"))), "no flow"
+    assert collect.first_angle(str(path / "log.f70")) == 10.0
 
 
 def test_slope_from_6_d_up(collect, out):

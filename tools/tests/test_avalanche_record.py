@@ -128,3 +128,15 @@ def test_kappa_studies_recorded(record, collect, tmp_path, kset):
     assert sorted(os.listdir(rec / kset / "k0.1" / "H6" / "s1")) == ["log.deposit", "log.f0", "log.f70"]
     assert collect.kappa_study(str(rec), kset) == collect.kappa_study(str(out), kset)
     assert [r[0] for r in collect.kappa_study(str(rec), kset)] == [0.1, 0.3]
+
+
+def test_switch_on_study_recorded(record, collect, tmp_path):
+    # run_production.sh's switch_on set writes out/switch_on/at<angle>: 70 kHz ramps
+    # of packings of the free-ends set, switched on 0.5 deg above that angle
+    out, rec = tmp_path / "out", tmp_path / "rec"
+    packing(out, 1, f70_finished=True)
+    late = packing(out, 1, f70_finished=True, geometry="switch_on/at17")
+    (late / "log.f70").write_text((late / "log.f70").read_text().replace("angle 18.00", "angle 17.50"))
+    assert record.record(str(out), str(rec)) == 6
+    assert collect.switch_on_study(str(rec)) == collect.switch_on_study(str(out))
+    assert [r[2] for r in collect.switch_on_study(str(rec))] == [17.5, 18.0]
