@@ -46,18 +46,38 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 static const char CMD[] = "fix acoustic/mindlin";
+// first word of the global restart state since it holds the settings'
+// signature; before, the first word was the step of the last update (>= -1)
+static constexpr double RESTART_WITH_SIGNATURE = -2.0;
+
+// FNV-1a: a 64-bit hash of a sequence of 64-bit words
+static constexpr std::uint64_t FNV_OFFSET = 1469598103934665603ULL;
+static void fnv1a_mix(std::uint64_t &hash, std::uint64_t value)
+{
+  for (int byte = 0; byte < 8; byte++) {
+    hash ^= (value >> (8 * byte)) & 0xff;
+    hash *= 1099511628211ULL;
+  }
+}
 
 /* ---------------------------------------------------------------------- */
 
 FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), source_groupbit(0), source_wall(-1), direction_axis(-1), direction_given(false), source_mode(ALL),
     solver_choice(Acoustic::LinearSolverChoice::Auto), reuse(false), ndof(0), damped(0), last_update(-1),
-    atoms_at_end(0), q_atom(nullptr), q_restored(false), amplitude_atom(nullptr), contact_array(nullptr),
-    ncontact_rows(0), maxcontact_rows(0)
+    atoms_at_end(0), settings_signature(FNV_OFFSET), restart_settings_differ(false), q_atom(nullptr),
+    q_restored(false), amplitude_atom(nullptr), contact_array(nullptr), ncontact_rows(0), maxcontact_rows(0)
 {
   if (narg < 10)
     error->all(FLERR, "Illegal {} command: expected fix ID group-ID acoustic/mindlin N "
                       "frequency f amplitude U0 source group-ID [keyword value ...]", CMD);
+
+  // the words after the fix ID, as given: a restart file written with other
+  // ones holds factors of another drive
+  for (int k = 1; k < narg; k++) {
+    for (const char *c = arg[k]; *c; c++) fnv1a_mix(settings_signature, static_cast<unsigned char>(*c));
+    fnv1a_mix(settings_signature, 0);
+  }
 
   nevery = utils::inumeric(FLERR, arg[3], false, lmp);
   if (nevery <= 0) error->all(FLERR, "Illegal {} command: N must be > 0, got {}", CMD, nevery);
@@ -347,15 +367,19 @@ bool FixAcousticMindlin::factors_are_current() const
 
 /* ----------------------------------------------------------------------
    before the forces of the setup: update only if the factors are not those
-   an uninterrupted run would have now (a new fix, a changed timestep)
+   an uninterrupted run would have now (a new fix, a changed timestep, a
+   restart file written by this fix with other settings)
 ------------------------------------------------------------------------- */
 
 void FixAcousticMindlin::setup_pre_force(int /*vflag*/)
 {
-  // the DOF amplitudes of a restart file serve the first setup after it only
+  // the DOF amplitudes and the settings of a restart file serve the first
+  // setup after it only
   int restored = q_restored ? 1 : 0, any_restored = 0;
   q_restored = false;
-  if (!factors_are_current()) {
+  const bool other_settings = restart_settings_differ;
+  restart_settings_differ = false;
+  if (!factors_are_current() || other_settings) {
     update_factors();
     return;
   }
@@ -462,6 +486,7 @@ void FixAcousticMindlin::update_factors()
 {
   const double t0 = MPI_Wtime();
   network->build(groupbit, {source_groupbit});
+  stats[NCONTACTS] = static_cast<double>(network->ncontacts_total());
   stats[TIME_GATHER] = MPI_Wtime() - t0;
   stats[TIME_ASSEMBLY] = stats[TIME_FACTORISATION] = stats[TIME_SOLVE] = stats[TIME_UPDATE] = 0.0;
   last_update = update->ntimestep;
@@ -605,7 +630,6 @@ void FixAcousticMindlin::factor_statistics(const std::vector<GranularContact> &c
   MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, world);
   double global_min = 1.0;
   MPI_Allreduce(&minimum, &global_min, 1, MPI_DOUBLE, MPI_MIN, world);
-  stats[NCONTACTS] = static_cast<double>(network->ncontacts_total());
   stats[MEAN_FACTOR] = (global[2] > 0.0) ? global[0] / global[2] : 1.0;
   stats[MIN_FACTOR] = global_min;
   stats[WEAK_FRACTION] = (global[2] > 0.0) ? global[1] / global[2] : 0.0;
@@ -617,17 +641,11 @@ void FixAcousticMindlin::factor_statistics(const std::vector<GranularContact> &c
 
 std::uint64_t FixAcousticMindlin::atoms_fingerprint() const
 {
-  // FNV-1a over nlocal, nghost and the atom IDs
-  std::uint64_t hash = 1469598103934665603ULL;
-  auto mix = [&hash](std::uint64_t value) {
-    for (int byte = 0; byte < 8; byte++) {
-      hash ^= (value >> (8 * byte)) & 0xff;
-      hash *= 1099511628211ULL;
-    }
-  };
-  mix(static_cast<std::uint64_t>(atom->nlocal));
-  mix(static_cast<std::uint64_t>(atom->nghost));
-  for (int i = 0; i < atom->nlocal + atom->nghost; i++) mix(static_cast<std::uint64_t>(atom->tag[i]));
+  std::uint64_t hash = FNV_OFFSET;
+  fnv1a_mix(hash, static_cast<std::uint64_t>(atom->nlocal));
+  fnv1a_mix(hash, static_cast<std::uint64_t>(atom->nghost));
+  for (int i = 0; i < atom->nlocal + atom->nghost; i++)
+    fnv1a_mix(hash, static_cast<std::uint64_t>(atom->tag[i]));
   return hash;
 }
 
@@ -639,23 +657,36 @@ double FixAcousticMindlin::compute_vector(int n)
 }
 
 /* ----------------------------------------------------------------------
-   global restart state: the step of the last update and the statistics
+   global restart state: a format tag, the step of the last update, the
+   statistics and the signature of the settings (two 32-bit halves, exact
+   in doubles); files of earlier versions start with the step and hold no
+   signature
 ------------------------------------------------------------------------- */
 
 void FixAcousticMindlin::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  double list[NVECTOR + 1];
-  list[0] = static_cast<double>(last_update);
-  for (int k = 0; k < NVECTOR; k++) list[k + 1] = stats[k];
-  const int size = (NVECTOR + 1) * sizeof(double);
+  double list[NVECTOR + 4];
+  list[0] = RESTART_WITH_SIGNATURE;
+  list[1] = static_cast<double>(last_update);
+  for (int k = 0; k < NVECTOR; k++) list[k + 2] = stats[k];
+  list[NVECTOR + 2] = static_cast<double>(settings_signature >> 32);
+  list[NVECTOR + 3] = static_cast<double>(settings_signature & 0xffffffffULL);
+  const int size = (NVECTOR + 4) * sizeof(double);
   fwrite(&size, sizeof(int), 1, fp);
-  fwrite(list, sizeof(double), NVECTOR + 1, fp);
+  fwrite(list, sizeof(double), NVECTOR + 4, fp);
 }
 
 void FixAcousticMindlin::restart(char *buf)
 {
   const auto *list = reinterpret_cast<double *>(buf);
+  const bool with_signature = (list[0] == RESTART_WITH_SIGNATURE);
+  if (with_signature) {
+    list++;
+    const std::uint64_t written = (static_cast<std::uint64_t>(list[NVECTOR + 1]) << 32) |
+        static_cast<std::uint64_t>(list[NVECTOR + 2]);
+    restart_settings_differ = (written != settings_signature);
+  }
   last_update = static_cast<bigint>(list[0]);
   for (int k = 0; k < NVECTOR; k++) stats[k] = list[k + 1];
   // the solver of this process counts from 0: its counts add to those of the writer

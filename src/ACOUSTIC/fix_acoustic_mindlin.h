@@ -100,6 +100,8 @@ class FixAcousticMindlin : public Fix {
 
   bigint last_update;           // step of the last update of the factors, -1: none yet
   std::uint64_t atoms_at_end;   // fingerprint of the atoms at the end of the last run
+  std::uint64_t settings_signature;   // hash of the words of the fix command after its ID
+  bool restart_settings_differ;       // the restart file read was written with other settings
 
   double **q_atom;            // complex DOF amplitudes per atom, (re, im) pairs
   bool q_restored;            // q_atom of this process's atoms came from a restart file

@@ -511,6 +511,48 @@ std::map<ContactKey, std::vector<double>> local_rows(LammpsInstance &L, const ch
   return rows;
 }
 
+TEST(FixParallel, RestartWrittenWithOtherSettingsUpdatesAtTheSetup)
+{
+  // the factors in a restart file belong to the drive that wrote it: the
+  // same fix ID defined with another amplitude (or frequency, source, ...)
+  // updates at the setup, even at a multiple of N, and its factors are those
+  // of a new fix with that amplitude on the same packing
+  const std::string file = "fix_acoustic_settings.restart";
+  auto fix = [](const std::string &id, const std::string &amplitude) {
+    return "fix " + id + " all acoustic/mindlin 40 frequency 3.0 amplitude " + amplitude + " source base\n";
+  };
+  const std::string continued = "comm_modify vel yes\nfix integrate grains nve/sphere\nfix plane all enforce2d\n"
+                                "neighbor 0.2 bin\nneigh_modify delay 0 every 1 check yes\nthermo 0\n";
+  double factorisations = 0.0, mean_written = 0.0;
+  {
+    LammpsInstance L;
+    L.commands(layer_deck("off"));
+    L.commands(fix("ac", "5e-4") + "run 80\n");
+    factorisations = L.lmp->modify->get_fix_by_id("ac")->compute_vector(11);
+    mean_written = L.lmp->modify->get_fix_by_id("ac")->compute_vector(1);
+    L.command("write_restart " + file);
+  }
+  ASSERT_LT(mean_written, 1.0);
+  double mean_new = 0.0;
+  {
+    // the same packing, the fix defined anew (another ID: no restart state)
+    LammpsInstance L;
+    L.command("read_restart " + file);
+    L.commands(continued + fix("fresh", "1e-4") + "run 0\n");
+    mean_new = L.lmp->modify->get_fix_by_id("fresh")->compute_vector(1);
+  }
+  ASSERT_GT(mean_new, mean_written) << "a smaller amplitude lowers the friction less";
+  LammpsInstance L;
+  L.command("read_restart " + file);
+  L.commands(continued + fix("ac", "1e-4") + "run 0\n");
+  LAMMPS_NS::Fix *ac = L.lmp->modify->get_fix_by_id("ac");
+  ASSERT_EQ(L.lmp->update->ntimestep % 40, 0);
+  EXPECT_EQ(ac->compute_vector(11), factorisations + 1.0) << "an update at the setup";
+  EXPECT_EQ(ac->compute_vector(1), mean_new) << "the factors of the new amplitude";
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (AcousticTest::mpi_rank() == 0) std::remove(file.c_str());
+}
+
 TEST(FixParallel, LocalOutputOfARestartedFixHasTheRowsOfItsLastUpdate)
 {
   // restarted at a multiple of N: the factors are current, no update at the
@@ -519,13 +561,14 @@ TEST(FixParallel, LocalOutputOfARestartedFixHasTheRowsOfItsLastUpdate)
   // the next update, and before that a dump local read an unset row count)
   const std::string file = "fix_acoustic_local.restart";
   const std::string fix = "fix ac all acoustic/mindlin 40 frequency 3.0 amplitude 5e-4 source base\n";
-  double factorisations = 0.0;
+  double factorisations = 0.0, contacts = 0.0;
   std::map<ContactKey, std::vector<double>> before;
   {
     LammpsInstance L;
     L.commands(layer_deck("off"));
     L.commands(fix + "run 80\n");
     factorisations = L.lmp->modify->get_fix_by_id("ac")->compute_vector(11);
+    contacts = L.lmp->modify->get_fix_by_id("ac")->compute_vector(0);
     before = local_rows(L, "ac");
     L.command("write_restart " + file);
   }
@@ -541,6 +584,7 @@ TEST(FixParallel, LocalOutputOfARestartedFixHasTheRowsOfItsLastUpdate)
              "dump rows all local 40 fix_acoustic_local.dump f_ac[1] f_ac[2] f_ac[6]\nrun 0\n");
   LAMMPS_NS::Fix *ac = L.lmp->modify->get_fix_by_id("ac");
   EXPECT_EQ(ac->compute_vector(11), factorisations) << "no update at the setup";
+  EXPECT_EQ(ac->compute_vector(0), contacts) << "the network of the last update, as in the file";
   const LAMMPS_NS::bigint restart_step = L.lmp->update->ntimestep;
   ASSERT_EQ(restart_step % 40, 0);
   // the same contacts with the same f_n, k_n, U_t and factor, up to
