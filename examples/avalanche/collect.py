@@ -203,14 +203,15 @@ KAPPA_SETS = {"kappa": ("ensemble_periodic", "periodic"), "kappa_free": ("ensemb
 
 def paired_packings(top, study, prefix, reference):
     """(value, H, seed, packing dir, reference dir) for every packing
-    OUT/<study>/<prefix><value>/H<H>/s<seed> of a study beside a set: the
+    OUT/<study>/<prefix><value>/H<H>/s<seed> of a study beside a set (value:
+    the rest of the directory name, a string): the
     same packing in OUT/<reference>.  A packing whose deposit differs from
     the reference's (grains, base, H, length of log.deposit) is not the same
     packing: it is left out, with a note on stderr."""
     pairs = []
     for d in sorted(glob.glob(os.path.join(top, study, prefix + "*", "H*", "s*"))):
         vdir, hdir = os.path.dirname(os.path.dirname(d)), os.path.dirname(d)
-        value, H = float(os.path.basename(vdir)[len(prefix):]), float(os.path.basename(hdir)[1:])
+        value, H = os.path.basename(vdir)[len(prefix):], float(os.path.basename(hdir)[1:])
         ref = os.path.join(top, reference, os.path.basename(hdir), os.path.basename(d))
         if not os.path.exists(os.path.join(ref, "log.deposit")) or \
                 deposit(os.path.join(d, "log.deposit")) != deposit(os.path.join(ref, "log.deposit")):
@@ -229,7 +230,7 @@ def kappa_study(top, kset="kappa"):
     for kappa, H, seed, d, ref in paired_packings(top, kset, "k", KAPPA_SETS[kset][0]):
         t0 = result(os.path.join(ref, "log.f0"))[0]
         onset0 = flow_onset(os.path.join(ref, "log.f0"))
-        for k, path in ((0.3, ref), (kappa, d)):
+        for k, path in ((0.3, ref), (float(kappa), d)):
             log = os.path.join(path, "log.f70")
             if os.path.exists(log) and np.isfinite(result(log)[0]):
                 t70 = result(log)[0]
@@ -240,27 +241,37 @@ def kappa_study(top, kset="kappa"):
 # the switch-on study of run_production.sh (set switch_on): 70 kHz ramps of
 # packings of the free-ends set tilted at rest without ultrasound to an angle
 # and driven from 0.5 deg higher on (AVALANCHE_SWITCH_ON), in
-# OUT/switch_on/at<angle>/H<H>/s<seed>, beside the set's own ramps
+# OUT/switch_on/at<angle>[_k<kappa_scale>]/H<H>/s<seed>, beside the set's own ramps
 SWITCH_ON_SET = ("switch_on", "at", "ensemble")
+KAPPA_SCALE = re.compile(r"kappa_scale ([0-9.eE+-]+)")
+
+
+def kappa_scale(log):
+    """kappa_scale of a ramp, from the first line of its log that gives it"""
+    for line in open(log):
+        m = KAPPA_SCALE.search(line)
+        if m:
+            return float(m.group(1))
+    return np.nan
 
 
 def switch_on_study(top):
-    """Rows (H, seed, first tested angle, theta_m 0 Hz, theta_m 70 kHz, first
-    spreading flow at 70 kHz, time followed at the angles before it (s), mean mu*/mu
-    before theta_m) of the 70 kHz ramps of the switch-on study and of the same
-    packings' ramps in the free-ends set (ultrasound on from the pre-ramp),
-    sorted by H, packing and first angle: does the creep at the angles
-    before the flow lower theta_m?"""
+    """Rows (H, seed, kappa_scale, first tested angle, theta_m 0 Hz, theta_m
+    70 kHz, first spreading flow at 70 kHz, time followed at the angles
+    before it (s), mean mu*/mu before theta_m) of the 70 kHz ramps of the
+    switch-on study and of the same packings' ramps in the free-ends set
+    (ultrasound on from the pre-ramp), sorted by H, packing, kappa_scale and
+    first angle: does the creep at the angles before the flow lower theta_m?"""
     rows = {}
     for _, H, seed, d, ref in paired_packings(top, *SWITCH_ON_SET):
         t0 = result(os.path.join(ref, "log.f0"))[0]
         for path in (ref, d):
             log = os.path.join(path, "log.f70")
             if os.path.exists(log) and np.isfinite(result(log)[0]):
-                start = first_angle(log)
-                rows[(H, seed, start)] = (H, seed, start, t0, result(log)[0], flow_onset(log),
-                                          time_before_onset(log), last_mu_factor(log))
-    return [rows[key] for key in sorted(rows, key=lambda k: (k[0], int(k[1]), k[2]))]
+                key = (H, seed, kappa_scale(log), first_angle(log))
+                rows[key] = key + (t0, result(log)[0], flow_onset(log), time_before_onset(log),
+                                   last_mu_factor(log))
+    return [rows[key] for key in sorted(rows, key=lambda k: (k[0], int(k[1]), k[2], k[3]))]
 
 
 def mean_sd(values):
@@ -564,12 +575,12 @@ def print_switch_on(rows):
         return
     print("\n### 70 kHz switched on at the first tested angle, after a tilt at rest without it "
           "(free ends; beside the ramps of the free-ends set)\n")
-    print("| H/d | packing | first tested angle | θ_m 0 kHz | θ_m 70 kHz | first spreading flow 70 kHz "
-          "| time followed before it (s) | mean μ*/μ before θ_m |")
-    print("|---|---|---|---|---|---|---|---|")
-    for H, seed, start, t0, t70, onset, creep, mu in rows:
-        print(f"| {H:g} | {seed} | {start:g}° | {num(t0)}° | {t70:g}° | {num(onset)}° | {num(creep, '.2f')} "
-              f"| {num(mu, '.3f')} |")
+    print("| H/d | packing | kappa_scale | first tested angle | θ_m 0 kHz | θ_m 70 kHz "
+          "| first spreading flow 70 kHz | time followed before it (s) | mean μ*/μ before θ_m |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for H, seed, kappa, start, t0, t70, onset, creep, mu in rows:
+        print(f"| {H:g} | {seed} | {num(kappa)} | {start:g}° | {num(t0)}° | {t70:g}° | {num(onset)}° "
+              f"| {num(creep, '.2f')} | {num(mu, '.3f')} |")
 
 
 def print_other_frequencies(by_h):

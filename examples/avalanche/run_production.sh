@@ -24,10 +24,12 @@
 #             0.2, packings 3 and 4 at 0.1 (0.3 is the set free), in
 #             out/kappa_free/k<kappa>
 #   switch_on does the creep before the flow lower theta_m? the 70 kHz ramps
-#             of packings 1 and 3 of the set free at H/d = 14.4, tilted at rest
+#             of the four packings of the set free at H/d = 14.4, tilted at rest
 #             without ultrasound to 9.5 deg and driven from 10 deg on
 #             (AVALANCHE_SWITCH_ON; the set free creeps under 70 kHz from 4 deg
-#             on), in out/switch_on/at9.5
+#             on), in out/switch_on/at9.5; then packings 1 and 3 with
+#             kappa_scale 0.17 (the band of paper 000's Fig. 3 at its own
+#             14.4 d layer), driven from 11 deg on, in out/switch_on/at10.5_k0.17
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${1:-$here/../../build}; shift || true
@@ -99,8 +101,12 @@ for set in "${sets[@]}"; do
       done ;;
     switch_on)
       # the deposits are made again (the same packings, as for kappa_free)
-      for s in 1 3; do
+      for s in 1 2 3 4; do
         AVALANCHE_SWITCH_ON=9.5 AVALANCHE_OUT=$here/out/switch_on/at9.5 "$E" "$build" 14.4 "$s" 70e3
+      done
+      for s in 1 3; do
+        AVALANCHE_KAPPA=0.17 AVALANCHE_SWITCH_ON=10.5 AVALANCHE_OUT=$here/out/switch_on/at10.5_k0.17 \
+          "$E" "$build" 14.4 "$s" 70e3
       done ;;
     *) echo "run_production: unknown set $set (periodic, tcon, free, more, kappa, kappa_free, switch_on)" >&2; exit 1 ;;
   esac

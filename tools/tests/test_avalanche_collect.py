@@ -117,11 +117,13 @@ def test_kappa_packing_of_another_deposit_left_out(collect, out, capsys):
     assert "kappa/k0.2/H6/s2 left out: its deposit is not that of" in capsys.readouterr().err
 
 
-def creeping_ramp(path, start, onset, theta_m):
+def creeping_ramp(path, start, onset, theta_m, kappa=0.3):
     """A 70 kHz log of a ramp from `start` that creeps (local, 1.3 s) until a
     flow spreads at `onset` (partial, 1.3 s) and becomes uniform at theta_m."""
     angles = np.arange(start, theta_m + 0.25, 0.5)
-    lines = [f"avalanche f70: pre-ramp to {start - 0.5:.2f} deg done at t = 0.820 s, "
+    lines = [f"avalanche f70: 500 grains, 80 base grains, freq 70e3 Hz, U0/d 1e-5, kappa_scale {kappa:g}, "
+             "source bottom; contacts in the network 900, epsE 3e-8\n",
+             f"avalanche f70: pre-ramp to {start - 0.5:.2f} deg done at t = 0.820 s, "
              "E_k/E_t = 5.87e-05 (NOT at rest after tsettle)\n"]
     lines += [angle(th, "local" if th < onset else "partial" if th < theta_m else "uniform", 0.6,
                     1.3 if th < theta_m else 0.3) for th in angles]
@@ -141,13 +143,20 @@ def test_switch_on_study_beside_the_free_ends_set(collect, out, capsys):
     creeping_ramp(late, 10.0, 10.5, 11.5)
     other = packing(out, "switch_on/at9.5", 14.4, 2, 14.2, ([(15, "uniform")], 15, 0.6), ([], 0, 0))
     creeping_ramp(other, 10.0, 10.0, 10.0)
+    # another coupling, switched on at 10.5 deg: its kappa_scale from the log
+    weak = packing(out, "switch_on/at10.5_k0.17", 14.4, 1, 13.9, ([(15, "uniform")], 15, 0.6), ([], 0, 0))
+    creeping_ramp(weak, 11.0, 12.0, 13.0, kappa=0.17)
     rows = collect.switch_on_study(str(out))
-    assert [r[:6] for r in rows] == [(14.4, "1", 4.0, 15.0, 10.5, 10.0), (14.4, "1", 10.0, 15.0, 11.5, 10.5)]
-    assert rows[0][6] == pytest.approx(12 * 1.3) and rows[1][6] == pytest.approx(1.3)
-    assert rows[0][7] == 0.6
+    assert [r[:7] for r in rows] == [(14.4, "1", 0.17, 11.0, 15.0, 13.0, 12.0),
+                                     (14.4, "1", 0.3, 4.0, 15.0, 10.5, 10.0),
+                                     (14.4, "1", 0.3, 10.0, 15.0, 11.5, 10.5)]
+    assert [r[7] for r in rows] == pytest.approx([2 * 1.3, 12 * 1.3, 1.3])
+    assert rows[1][8] == 0.6
     assert "switch_on/at9.5/H14.4/s2 left out: its deposit is not that of" in capsys.readouterr().err
     collect.print_switch_on(rows)
-    assert "| 14.4 | 1 | 10° | 15° | 11.5° | 10.5° | 1.30 | 0.600 |" in capsys.readouterr().out
+    printed = capsys.readouterr().out
+    assert "| 14.4 | 1 | 0.3 | 10° | 15° | 11.5° | 10.5° | 1.30 | 0.600 |" in printed
+    assert "| 14.4 | 1 | 0.17 | 11° | 15° | 13° | 12° | 2.60 | 0.600 |" in printed
 
 
 def test_time_before_onset_needs_a_flow(collect, out):

@@ -139,4 +139,4 @@ def test_switch_on_study_recorded(record, collect, tmp_path):
     (late / "log.f70").write_text((late / "log.f70").read_text().replace("angle 18.00", "angle 17.50"))
     assert record.record(str(out), str(rec)) == 6
     assert collect.switch_on_study(str(rec)) == collect.switch_on_study(str(out))
-    assert [r[2] for r in collect.switch_on_study(str(rec))] == [17.5, 18.0]
+    assert [r[3] for r in collect.switch_on_study(str(rec))] == [17.5, 18.0]
