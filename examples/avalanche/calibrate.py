@@ -22,6 +22,12 @@ and a PNG with tools/avalanche_figures.py.
 
   PYTHONPATH=build/lammps-tree/python:tools LD_LIBRARY_PATH=build/lammps \\
     /usr/bin/python3 examples/avalanche/calibrate.py out/demo/deposit.restart out/calibration.json
+
+One scan of a large layer (the dense modes of the spectrum grow as the cube
+of the grains; in.modes -var method kpm gives its band instead):
+
+    ... calibrate.py STATE.restart out.json --scan kappa --values 0.15 0.17 0.2 0.3 \\
+        --sources bottom --no-spectrum
 """
 import argparse
 import json
@@ -137,14 +143,24 @@ def main(argv=None):
     parser.add_argument("output")
     parser.add_argument("--freq", type=float, default=70e3)
     parser.add_argument("--quick", action="store_true", help="two values per scan (tests)")
+    parser.add_argument("--scan", choices=sorted(SCANS), help="this parameter only")
+    parser.add_argument("--values", type=float, nargs="+", help="its values (with --scan)")
+    parser.add_argument("--sources", choices=SOURCES, nargs="+", default=list(SOURCES))
+    parser.add_argument("--no-spectrum", action="store_true",
+                        help="no eigenmodes and pulse (dense: too costly for thousands of grains)")
     args = parser.parse_args(argv)
+    if args.values and not args.scan:
+        parser.error("--values needs --scan")
+    scans = {k: (v[::len(v) - 1] if args.quick else v) for k, v in SCANS.items()
+             if args.scan in (None, k)}
+    if args.values:
+        scans[args.scan] = args.values
     lmp = open_layer(os.path.abspath(args.restart))
     d = lmp.extract_variable("d")
     where = layer_geometry(lmp)
-    scans = {k: (v[::len(v) - 1] if args.quick else v) for k, v in SCANS.items()}
     results = {"reference": REFERENCE, "freq": args.freq, "grains": int(lmp.get_natoms()),
                "J": int(lmp.extract_variable("nJ")), "height": where[3], "scans": {}}
-    for source in SOURCES:
+    for source in args.sources:
         for name, values in scans.items():
             rows = []
             for value in values:
@@ -154,7 +170,7 @@ def main(argv=None):
                 rows.append(row)
             results["scans"][f"{source}:{name}"] = rows
     speeds = []
-    for kappa in scans["kappa"]:
+    for kappa in ([] if args.no_spectrum else scans.get("kappa", [])):
         row = spectrum_and_speed(lmp, kappa, args.freq, where)
         row["kappa"] = kappa
         speeds.append(row)

@@ -65,6 +65,25 @@ def test_spectrum_and_speed_scale_as_kappa_to_one_third(scan):
     assert high["speed"] / low["speed"] == pytest.approx(ratio, rel=0.03)
 
 
+def test_one_scan_without_spectrum_repeats_the_full_scan(scan):
+    # a large layer: one parameter, one source, no dense modes; its rows are
+    # those of the full scan for the same values
+    work, full = scan
+    values = [row["value"] for row in full["scans"]["bottom:kappa"]]
+    done = subprocess.run([sys.executable, os.path.join(HERE, "calibrate.py"), "deposit.restart", "kappa.json",
+                           "--scan", "kappa", "--values"] + [str(v) for v in values] +
+                          ["--sources", "bottom", "--no-spectrum"],
+                          cwd=work, capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    one = json.load(open(work / "kappa.json"))
+    assert list(one["scans"]) == ["bottom:kappa"]
+    assert one["scans"]["bottom:kappa"] == full["scans"]["bottom:kappa"]
+    assert one["spectrum_and_speed"] == []
+    wrong = subprocess.run([sys.executable, os.path.join(HERE, "calibrate.py"), "deposit.restart", "x.json",
+                            "--values", "0.1"], cwd=work, capture_output=True, text=True, timeout=120)
+    assert wrong.returncode != 0 and "--values needs --scan" in wrong.stderr
+
+
 def test_figure(scan):
     work, _ = scan
     done = subprocess.run([sys.executable, os.path.join(TOOLS, "avalanche_figures.py"), "calibration",
