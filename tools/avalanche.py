@@ -38,9 +38,10 @@ Units are those of the run (SI for examples/avalanche).  Command line:
     python3 tools/avalanche.py profile run.dump run.contacts --theta 10.5 [--dz 2] [--obs 0.3 0.7]
                                                                 mu*/mu against the height
     python3 tools/avalanche.py spectrum run.dump run.contacts  frequency quantiles of the network
-    python3 tools/avalanche.py band modes.hist [--drive 70e3]  where the drive falls in a density of
-                                                                states (in.modes, method dense or kpm)
                                      [--frame 0] [--above 70e3]  and the fraction of modes above 70 kHz
+    python3 tools/avalanche.py band modes.hist [--drive 70e3] [--shares 0.99 0.999]
+                                                                where the drive falls in a density of
+                                                                states (in.modes, method dense or kpm)
 """
 import argparse
 import sys

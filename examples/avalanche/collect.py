@@ -267,10 +267,10 @@ def switch_on_study(top):
         t0 = result(os.path.join(ref, "log.f0"))[0]
         for path in (ref, d):
             log = os.path.join(path, "log.f70")
-            if os.path.exists(log) and np.isfinite(result(log)[0]):
+            t70 = result(log)[0]
+            if np.isfinite(t70):
                 key = (H, seed, kappa_scale(log), first_angle(log))
-                rows[key] = key + (t0, result(log)[0], flow_onset(log), time_before_onset(log),
-                                   last_mu_factor(log))
+                rows[key] = key + (t0, t70, flow_onset(log), time_before_onset(log), last_mu_factor(log))
     return [rows[key] for key in sorted(rows, key=lambda k: (k[0], int(k[1]), k[2], k[3]))]
 
 

@@ -361,7 +361,7 @@ def test_fraction_of_modes_above_a_drive():
     assert av.fraction_above(f, 1.0) == 1.0
 
 
-def test_band_from_a_density_of_states(tmp_path):
+def test_band_from_a_density_of_states(tmp_path, capsys):
     # a triangular density 2 f / F^2 on [0, F], F = 100, on 100 bins of 1
     # (the exact bin averages): F(f) = (f / F)^2 below f, so 49 % below 70 and
     # 99 % below 100 sqrt(0.99); a drive above the band has every mode below it
@@ -376,12 +376,8 @@ def test_band_from_a_density_of_states(tmp_path):
     hist = tmp_path / "modes.hist"
     hist.write_text("# Time-averaged data\n# TimeStep Number-of-rows\n0 100\n" +
                     "".join(f"{k + 1} {c} {d} 0\n" for k, (c, d) in enumerate(zip(centres, density))))
-    import contextlib
-    import io
-    out = io.StringIO()
-    with contextlib.redirect_stdout(out):
-        av.main(["band", str(hist), "--drive", "70", "--shares", "0.25"])
-    assert out.getvalue().strip() == "49.00% of the modes below 70; 25.0% below 50"
+    av.main(["band", str(hist), "--drive", "70", "--shares", "0.25"])
+    assert capsys.readouterr().out.strip() == "49.00% of the modes below 70; 25.0% below 50"
 
 
 def test_figures_from_synthetic_runs(tmp_path):
