@@ -29,12 +29,23 @@
 #             (AVALANCHE_SWITCH_ON; the set free creeps under 70 kHz from 4 deg
 #             on), in out/switch_on/at9.5; then packings 1 and 3 with
 #             kappa_scale 0.17 (the band of paper 000's Fig. 3 at its own
-#             14.4 d layer), driven from 11 deg on, in out/switch_on/at10.5_k0.17
+#             14.4 d layer), driven from 11 deg on, in out/switch_on/at10.5_k0.17;
+#             then the four packings at H/d = 6 with kappa_scale 0.17, tilted at
+#             rest to 13 deg and driven from 13.5 deg on (out/switch_on/at13_k0.17;
+#             the deposits of the set free are reused when they are there), and
+#             14.4 d packings 2 and 4 at 0.17
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 build=${1:-$here/../../build}; shift || true
 sets=("$@"); [ ${#sets[@]} -gt 0 ] || sets=(periodic)
 E=$here/run_ensemble.sh
+# reuse_deposit FROM TO: a packing's deposit made by another set, copied
+# (the same seed and geometry give the same deposit; making it again costs
+# minutes)
+reuse_deposit() {
+  [ -f "$1/deposit.restart" ] && [ ! -f "$2/deposit.restart" ] || return 0
+  mkdir -p "$2" && cp "$1/deposit.restart" "$1/log.deposit" "$2/"
+}
 seeds=(4871 1 2 3)
 for set in "${sets[@]}"; do
   case $set in
@@ -105,6 +116,15 @@ for set in "${sets[@]}"; do
         AVALANCHE_SWITCH_ON=9.5 AVALANCHE_OUT=$here/out/switch_on/at9.5 "$E" "$build" 14.4 "$s" 70e3
       done
       for s in 1 3; do
+        AVALANCHE_KAPPA=0.17 AVALANCHE_SWITCH_ON=10.5 AVALANCHE_OUT=$here/out/switch_on/at10.5_k0.17 \
+          "$E" "$build" 14.4 "$s" 70e3
+      done
+      for s in 1 2 3 4; do
+        reuse_deposit "$here/out/ensemble/H6/s$s" "$here/out/switch_on/at13_k0.17/H6/s$s"
+        AVALANCHE_KAPPA=0.17 AVALANCHE_SWITCH_ON=13 AVALANCHE_OUT=$here/out/switch_on/at13_k0.17 \
+          "$E" "$build" 6 "$s" 70e3
+      done
+      for s in 2 4; do
         AVALANCHE_KAPPA=0.17 AVALANCHE_SWITCH_ON=10.5 AVALANCHE_OUT=$here/out/switch_on/at10.5_k0.17 \
           "$E" "$build" 14.4 "$s" 70e3
       done ;;
