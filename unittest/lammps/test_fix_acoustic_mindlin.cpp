@@ -553,6 +553,40 @@ TEST(FixParallel, RestartWrittenWithOtherSettingsUpdatesAtTheSetup)
   if (AcousticTest::mpi_rank() == 0) std::remove(file.c_str());
 }
 
+TEST(FixParallel, GlobalRestartStateOfAnEarlierVersionIsRead)
+{
+  // files written before the settings' signature hold [step of the last
+  // update, statistics]: read, the step says the factors are current (no
+  // update at the setup) and the solver counts go on from the written ones
+  const std::string file = "fix_acoustic_old_state.restart";
+  const std::string deck = "fix ac all acoustic/mindlin 40 frequency 3.0 amplitude 5e-4 source base\n";
+  std::vector<double> earlier_state;
+  {
+    LammpsInstance L;
+    L.commands(layer_deck("off"));
+    L.commands(deck + "run 80\n");
+    LAMMPS_NS::Fix *ac = L.lmp->modify->get_fix_by_id("ac");
+    earlier_state.push_back(static_cast<double>(L.lmp->update->ntimestep));
+    for (int k = 0; k < ac->size_vector; k++) earlier_state.push_back(ac->compute_vector(k));
+    L.command("write_restart " + file);
+  }
+  LammpsInstance L;
+  L.command("read_restart " + file);
+  L.commands("comm_modify vel yes\nfix integrate grains nve/sphere\nfix plane all enforce2d\n"
+             "neighbor 0.2 bin\nneigh_modify delay 0 every 1 check yes\nthermo 0\n" + deck);
+  LAMMPS_NS::Fix *ac = L.lmp->modify->get_fix_by_id("ac");
+  // the state of the file replaced by that of an earlier version
+  ac->restart(reinterpret_cast<char *>(earlier_state.data()));
+  L.command("run 0");
+  EXPECT_EQ(ac->compute_vector(11), earlier_state[12]) << "no update at the setup";
+  EXPECT_EQ(ac->compute_vector(0), earlier_state[1]) << "the contacts of the last update";
+  // the mean is taken again from the factors of the file, summed in the
+  // order of the restarted contacts
+  EXPECT_NEAR(ac->compute_vector(1), earlier_state[2], 1e-12) << "the factors of the file";
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (AcousticTest::mpi_rank() == 0) std::remove(file.c_str());
+}
+
 TEST(FixParallel, LocalOutputOfARestartedFixHasTheRowsOfItsLastUpdate)
 {
   // restarted at a multiple of N: the factors are current, no update at the
