@@ -475,7 +475,8 @@ def band_from_density(centres, density, drive, shares=(0.99, 0.999)):
     for the dense eigensolver): the share of the modes below the drive, and
     the frequencies below which the given shares of the modes lie (the top
     of the band).  The density is per unit frequency at the bin centres and
-    taken uniform within a bin."""
+    taken uniform within a bin; negative values (the noise of the stochastic
+    traces of method kpm, where the true density is small) count as none."""
     width = centres[1] - centres[0]
     upper = centres + width / 2.0
     cumulative = np.concatenate(([0.0], np.cumsum(np.clip(density, 0.0, None) * width)))

@@ -372,6 +372,12 @@ def test_band_from_a_density_of_states(tmp_path, capsys):
     assert tops[0] == pytest.approx(100.0 * math.sqrt(0.99), abs=0.01)
     assert tops[1] == pytest.approx(50.0)
     assert av.band_from_density(centres, density, 150.0)[0] == 1.0
+    # bins above the band with the small negative densities of kpm's noise
+    # count as empty: the same band
+    noisy = np.concatenate((density, [-1e-4, 2e-5, -3e-5]))
+    below_noisy, tops_noisy = av.band_from_density(np.arange(103) + 0.5, noisy, 70.0, (0.99, 0.25))
+    assert below_noisy == pytest.approx(0.49 / (1.0 + 2e-5), rel=1e-12)
+    assert tops_noisy[1] == pytest.approx(tops[1], rel=1e-4)
     # the same through the command line, from an in.modes histogram file
     hist = tmp_path / "modes.hist"
     hist.write_text("# Time-averaged data\n# TimeStep Number-of-rows\n0 100\n" +
