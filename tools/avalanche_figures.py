@@ -102,9 +102,11 @@ def fig_thetam(a):
     [paper0 paper70]" (means and standard deviations over the packings, nan
     where missing); paper 000's trend (20 deg at 3 d, -0.26 deg/d, 2 deg lower
     with 70 kHz) is drawn as dashed lines.  --free TABLE adds a second
-    geometry (free ends) in the same format, drawn with open squares."""
+    geometry (free ends) in the same format, drawn with open squares;
+    --coupling TABLE LABEL (repeatable) adds theta_m at 70 kHz at another
+    coupling, lines "H/d theta70 sd70", drawn with open diamonds."""
     t = np.atleast_2d(np.loadtxt(a.table))
-    fig, ax = plt.subplots(figsize=(4.5, 3.4))
+    fig, ax = plt.subplots(figsize=(7.0, 3.4))
     sets = [(t, "o-", None, a.label)]
     if a.free:
         sets.append((np.atleast_2d(np.loadtxt(a.free)), "s:", "none", a.free_label))
@@ -115,6 +117,10 @@ def fig_thetam(a):
                 ax.errorbar(table[ok, col], table[ok, 0], xerr=np.nan_to_num(table[ok, col + 1]), fmt=fmt, color=c,
                             capsize=3,
                             label=f"{label}, {name} (mean ± s.d.)", **({"mfc": fill} if fill else {}))
+    for k, (table, name) in enumerate(a.coupling or []):
+        c = np.atleast_2d(np.loadtxt(table))
+        ax.errorbar(c[:, 1], c[:, 0], xerr=np.nan_to_num(c[:, 2]), fmt="D", mfc="none", color=f"C{k + 2}",
+                    capsize=3, label=f"70 kHz, {name} (mean ± s.d.)")
     h = np.linspace(3, 14.4, 2)
     ax.plot(20 - 0.26 * (h - 3), h, "--", color="tab:blue", lw=0.8, label="paper 000 trend, 0 kHz")
     ax.plot(18 - 0.26 * (h - 3), h, "--", color="tab:orange", lw=0.8, label="paper 000: 2° lower, 70 kHz")
@@ -125,7 +131,7 @@ def fig_thetam(a):
                     label=f"paper 000 text, {'0' if col == 5 else '70'} kHz")
     ax.set_xlabel(r"avalanche angle $\theta_m$ (°)")
     ax.set_ylabel("H/d")
-    ax.legend(fontsize=6)
+    ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0))   # beside the axes: no point hidden
     fig.tight_layout()
     return fig
 
@@ -271,6 +277,8 @@ def main(argv=None):
     t.add_argument("--label", default="this code")
     t.add_argument("--free", help="a second table (free ends), drawn with open squares")
     t.add_argument("--free-label", default="free ends")
+    t.add_argument("--coupling", nargs=2, action="append", metavar=("TABLE", "LABEL"),
+                   help="theta_m at 70 kHz at another coupling (lines H/d theta70 sd70), open diamonds")
     c = sub.add_parser("tcon")
     c.add_argument("table")
     kap = sub.add_parser("kappa")

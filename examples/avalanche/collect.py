@@ -199,6 +199,7 @@ def time_before_onset(log):
 # the kappa_scale studies of run_production.sh: directory -> (the geometry
 # whose ramps at the default kappa_scale 0.3 they stand beside, its label)
 KAPPA_SETS = {"kappa": ("ensemble_periodic", "periodic"), "kappa_free": ("ensemble", "free ends")}
+SET_KAPPA = 0.3               # kappa_scale of the ensembles (run_ensemble.sh's default)
 
 
 def paired_packings(top, study, prefix, reference):
@@ -230,7 +231,7 @@ def kappa_study(top, kset="kappa"):
     for kappa, H, seed, d, ref in paired_packings(top, kset, "k", KAPPA_SETS[kset][0]):
         t0 = result(os.path.join(ref, "log.f0"))[0]
         onset0 = flow_onset(os.path.join(ref, "log.f0"))
-        for k, path in ((0.3, ref), (float(kappa), d)):
+        for k, path in ((SET_KAPPA, ref), (float(kappa), d)):
             log = os.path.join(path, "log.f70")
             if os.path.exists(log) and np.isfinite(result(log)[0]):
                 t70 = result(log)[0]
@@ -272,6 +273,19 @@ def switch_on_study(top):
                 key = (H, seed, kappa_scale(log), first_angle(log))
                 rows[key] = key + (t0, t70, flow_onset(log), time_before_onset(log), last_mu_factor(log))
     return [rows[key] for key in sorted(rows, key=lambda k: (k[0], int(k[1]), k[2], k[3]))]
+
+
+def coupling_summary(rows):
+    """theta_m at 70 kHz of the switch-on ramps at couplings other than the
+    ensembles' (switch_on_study rows): {kappa_scale: [(H, (mean, s.d.,
+    count) of theta_m, (mean, s.d., count) of the shift from the same
+    packing's theta_m at 0 Hz)]}, by H."""
+    groups = {}
+    for H, _, kappa, _, t0, t70, *_ in rows:
+        if kappa != SET_KAPPA:
+            groups.setdefault(kappa, {}).setdefault(H, []).append((t70, t0 - t70))
+    return {kappa: [(H, mean_sd([t for t, _ in v]), mean_sd([d for _, d in v])) for H, v in sorted(by_h.items())]
+            for kappa, by_h in sorted(groups.items())}
 
 
 def mean_sd(values):
@@ -369,6 +383,12 @@ def fmt(ms, digits=2):
     return f"{m:.{digits}f} ± {s:.{digits}f}" if np.isfinite(s) else f"{m:.{digits}f}"
 
 
+def standard_error(ms):
+    """The standard error of the mean of a (mean, s.d., count), as fmt takes it."""
+    m, s, n = ms
+    return (s / np.sqrt(n) if n > 1 else np.nan, np.nan, 1)
+
+
 def num(x, spec="g"):
     """x formatted by spec, or a dash when it was not measured (nan)."""
     return format(x, spec) if np.isfinite(x) else "—"
@@ -391,17 +411,13 @@ def print_tables(all_ens, summary):
             trend = 20.0 + PAPER_SLOPE * (r["H"] - 3.0)
             ptxt = (f"{p[0]:g} / {p[1]:g}" if p and np.isfinite(p[1]) else f"{p[0]:g} / ≈ {p[0] - 2:g}" if p
                     else f"≈ {trend:.1f} / ≈ {trend - 2:.1f} (Fig. 7)")
-            m, s, n = r["shift"]
-            se = s / np.sqrt(n) if n > 1 else np.nan
             print(f"| {r['H']:g} ({r['H_measured']:.2f}) | {r['n']} | {r['grains']} + {r['base']}, {r['length']:g} d "
-                  f"| {fmt(r['theta0'])}° | {fmt(r['theta70'])}° | {fmt(r['shift'])}° ({fmt((se, np.nan, 1))}°) "
+                  f"| {fmt(r['theta0'])}° | {fmt(r['theta70'])}° | {fmt(r['shift'])}° ({fmt(standard_error(r['shift']))}°) "
                   f"| {fmt(r['tcon0'])} / {fmt(r['tcon70'])} | {ptxt} | {num(r['wall0'], '.0f')} / {num(r['wall70'], '.0f')} |")
         print("\nfirst angle with a flow that spreads (partial or uniform), mean ± s.d.:")
         for r in rows:
-            m, s, n = r["onset_shift"]
-            se = s / np.sqrt(n) if n > 1 else np.nan
             print(f"- H = {r['H']:g} d: 0 kHz {fmt(r['onset0'])}°, 70 kHz {fmt(r['onset70'])}°, "
-                  f"shift {fmt(r['onset_shift'])}° (s.e. {fmt((se, np.nan, 1))}°)")
+                  f"shift {fmt(r['onset_shift'])}° (s.e. {fmt(standard_error(r['onset_shift']))}°)")
         print(f"\nslope of θ_m(H/d), all packings: 0 kHz {slope_text(s0)}, "
               f"70 kHz {slope_text(s70)} (paper 000 ≈ {PAPER_SLOPE}°/d)")
         t0, t70 = theta_slope(by_h, "f0", 6.0), theta_slope(by_h, "f70", 6.0)
@@ -481,7 +497,10 @@ def tcon_table_lines(all_ens, label, free):
     return lines
 
 
-def figures(all_ens, summary, top, figdir):
+def figures(all_ens, summary, top, figdir, couplings=None):
+    """Fig. 7 (and, with couplings (coupling_summary), theta_m at 70 kHz at
+    other couplings beside it), Fig. 8, and from the dumps where they are
+    there Figs. 3, 6/9 and 10."""
     os.makedirs(figdir, exist_ok=True)
     label = "periodic" if "periodic" in all_ens else next(iter(all_ens), None)
     if label is None:
@@ -493,6 +512,12 @@ def figures(all_ens, summary, top, figdir):
     if free and free != label:
         thetam_table(summary[free][0], os.path.join(top, "thetam_free.txt"))
         args += ["--free", os.path.join(top, "thetam_free.txt"), "--free-label", free]
+    measured = {r["H"]: r["H_measured"] for r in summary[free or label][0]}
+    for kappa, points in (couplings or {}).items():
+        table = os.path.join(top, f"thetam_k{kappa:g}.txt")
+        with open(table, "w") as f:
+            f.writelines(f"{measured.get(H, H):g} {t[0]:g} {t[1]:g}\n" for H, t, _ in points)
+        args += ["--coupling", table, f"kappa_scale {kappa:g}, switched on at rest"]
     figs.main(args + ["-o", os.path.join(figdir, "fig7_thetam.png"), "--dpi", "80"])
     by_h = all_ens[label]
     table8 = os.path.join(top, "tcon.txt")
@@ -583,6 +608,14 @@ def print_switch_on(rows):
               f"| {num(creep, '.2f')} | {num(mu, '.3f')} |")
 
 
+def print_couplings(couplings):
+    for kappa, points in couplings.items():
+        print(f"\nθ_m at 70 kHz with kappa_scale {kappa:g} (switched on at rest; mean ± s.d., the shift paired "
+              "by packing):")
+        for H, t70, shift in points:
+            print(f"- H = {H:g} d: {fmt(t70)}° (n = {t70[2]}), shift {fmt(shift)}° (s.e. {fmt(standard_error(shift))}°)")
+
+
 def print_other_frequencies(by_h):
     rows = [(H, p, r) for H, packs in sorted(by_h.items()) for p in packs for r in p["other"]]
     if not rows:
@@ -602,8 +635,11 @@ def main(top=os.path.join(here, "out"), figdir=os.path.join(here, "figures")):
     kappa_rows = {kset: kappa_study(top, kset) for kset in KAPPA_SETS}
     for kset, rows in kappa_rows.items():
         print_kappa(rows, KAPPA_SETS[kset][1])
-    print_switch_on(switch_on_study(top))
-    figures(all_ens, summary, top, figdir)
+    switch_on = switch_on_study(top)
+    print_switch_on(switch_on)
+    couplings = coupling_summary(switch_on)
+    print_couplings(couplings)
+    figures(all_ens, summary, top, figdir, couplings)
     for kset, rows in kappa_rows.items():
         kappa_figure(rows, kset, top, figdir)
     with open(os.path.join(top, "summary.json"), "w") as f:

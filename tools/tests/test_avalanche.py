@@ -405,6 +405,7 @@ def test_figures_from_synthetic_runs(tmp_path):
     tablek = tmp_path / "kappa.txt"
     tablek.write_text("0.1 6 1 0.5 0.9 1 periodic\n0.3 6 1 5 0.6 5 periodic\n0.3 6 2 4 0.6 4.5 periodic\n"
                       "0.1 8.7 1 1.5 0.8 2 free_ends\n0.3 8.7 1 3 0.6 nan free_ends\n")
+    (tmp_path / "coupling.txt").write_text("6 16.5 0.4\n14.4 15 nan\n")
     table8 = tmp_path / "tcon.txt"
     table8.write_text("0kHz 19.5 0.2\n0kHz 20.5 0.1\n70kHz 15 0.09\npaper_0kHz 19 1.15\n")
     hist = tmp_path / "modes.hist"
@@ -412,6 +413,7 @@ def test_figures_from_synthetic_runs(tmp_path):
                     "100 3\n1 500 0.0004\n2 1500 0.0004\n3 2500 0.0002\n")
     runs = [["modes", str(dump), str(contacts), "--f0", "1"], ["modes", "--hist", str(hist)], ["sigma", str(series), "--theta", "11"],
             ["thetam", str(table7)], ["thetam", str(table7), "--free", str(table7), "--label", "periodic"],
+            ["thetam", str(table7), "--coupling", str(tmp_path / "coupling.txt"), "kappa_scale 0.17"],
             ["tcon", str(table8)], ["kappa", str(tablek)], ["chains", str(dump), str(contacts)]]
     for k, args in enumerate(runs):
         out = tmp_path / f"fig{k}.png"

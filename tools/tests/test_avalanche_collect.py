@@ -157,6 +157,21 @@ def test_switch_on_study_beside_the_free_ends_set(collect, out, capsys):
     printed = capsys.readouterr().out
     assert "| 14.4 | 1 | 0.3 | 10° | 15° | 11.5° | 10.5° | 1.30 | 0.600 |" in printed
     assert "| 14.4 | 1 | 0.17 | 11° | 15° | 13° | 12° | 2.60 | 0.600 |" in printed
+    # theta_m at the other coupling, by H, with its shift from the same
+    # packing's theta_m at 0 Hz (the set's own coupling left out)
+    weak2 = packing(out, "switch_on/at10.5_k0.17", 14.4, 3, 14.0, ([(15, "uniform")], 15, 0.6), ([], 0, 0))
+    ref3 = packing(out, "ensemble", 14.4, 3, 14.0, ([(16, "uniform")], 16, 0.6), ([], 0, 0))
+    creeping_ramp(ref3, 4.0, 10.0, 11.0)
+    creeping_ramp(weak2, 11.0, 12.0, 14.0, kappa=0.17)
+    couplings = collect.coupling_summary(collect.switch_on_study(str(out)))
+    assert list(couplings) == [0.17]
+    (H, theta70, shift), = couplings[0.17]
+    assert H == 14.4
+    assert theta70[0] == 13.5 and theta70[1] == pytest.approx(np.sqrt(0.5)) and theta70[2] == 2
+    assert shift[0] == 2.0 and shift[1] == 0.0
+    capsys.readouterr()
+    collect.print_couplings(couplings)
+    assert "- H = 14.4 d: 13.50 ± 0.71° (n = 2), shift 2.00 ± 0.00° (s.e. 0.00°)" in capsys.readouterr().out
 
 
 def test_time_before_onset_needs_a_flow(collect, out):
