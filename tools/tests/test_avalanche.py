@@ -419,3 +419,25 @@ def test_figures_from_synthetic_runs(tmp_path):
         out = tmp_path / f"fig{k}.png"
         assert figs.main(args + ["-o", str(out), "--dpi", "40"]) == 0
         assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_fig7_draws_the_points_of_another_coupling(tmp_path):
+    """thetam --coupling: the points of the table (theta_m on x, H/d on y)
+    with their standard deviations as error bars, labelled with the name."""
+    import argparse
+    import avalanche_figures as figs
+    table7 = tmp_path / "thetam.txt"
+    table7.write_text("3 20 1.0 14.5 0.5 20 14.5\n6 19.5 1.2 15 0.7 nan nan\n")
+    coupling = tmp_path / "coupling.txt"
+    coupling.write_text("6.07 16.5 0.41\n13.91 14.75 0.5\n")
+    a = argparse.Namespace(table=str(table7), label="free ends", free=None, free_label="",
+                           coupling=[(str(coupling), "kappa_scale 0.17")])
+    ax = figs.fig_thetam(a).axes[0]
+    drawn = [c for c in ax.containers if c.get_label() == "70 kHz, kappa_scale 0.17 (mean ± s.d.)"]
+    assert len(drawn) == 1
+    points, _, (bars,) = drawn[0].lines
+    assert points.get_xdata().tolist() == [16.5, 14.75]
+    assert points.get_ydata().tolist() == [6.07, 13.91]
+    # each error bar spans mean - s.d. to mean + s.d. at its H/d
+    spans = [sorted(x for x, _ in seg) for seg in bars.get_segments()]
+    assert spans == [pytest.approx([16.09, 16.91]), pytest.approx([14.25, 15.25])]
