@@ -431,6 +431,7 @@ LinearSolverChoice linear_solver_from_name(const std::string &name)
   if (name == "ldlt") return LinearSolverChoice::Ldlt;
   if (name == "lu") return LinearSolverChoice::Lu;
   if (name == "mumps") return LinearSolverChoice::Mumps;
+  if (name == "iterative") return LinearSolverChoice::Iterative;
   throw SolverError("unknown linear solver '" + name + "': allowed solvers are " + linear_solver_names());
 }
 
@@ -443,6 +444,8 @@ std::string linear_solver_name(LinearSolverChoice choice)
       return "lu";
     case LinearSolverChoice::Mumps:
       return "mumps";
+    case LinearSolverChoice::Iterative:
+      return "iterative";
     default:
       return "auto";
   }
@@ -450,7 +453,7 @@ std::string linear_solver_name(LinearSolverChoice choice)
 
 std::string linear_solver_names()
 {
-  return "auto, ldlt, lu, mumps";
+  return "auto, ldlt, lu, mumps, iterative";
 }
 
 std::string solve_status_name(SolveStatus status)
@@ -468,6 +471,9 @@ std::string solve_status_name(SolveStatus status)
 HelmholtzSolver::HelmholtzSolver(LinearSolverChoice choice, double residual_tolerance, MPI_Comm comm) :
     choice_(choice), residual_tolerance_(residual_tolerance), factors_(new Factorisations(comm))
 {
+  if (choice == LinearSolverChoice::Iterative)
+    throw SolverError("Helmholtz solver: the iterative solver works on the distributed network; "
+                      "use KrylovHelmholtzSolver");
   if (!(residual_tolerance > 0.0) || !std::isfinite(residual_tolerance))
     throw SolverError("Helmholtz solver: the residual tolerance must be positive, got " +
                       std::to_string(residual_tolerance));

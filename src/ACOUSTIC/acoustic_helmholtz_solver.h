@@ -52,12 +52,14 @@
 
 namespace Acoustic {
 
-enum class LinearSolverChoice { Auto, Ldlt, Lu, Mumps };
+// Iterative: KrylovHelmholtzSolver on the distributed network (acoustic_krylov_solver.h);
+// HelmholtzSolver takes the others
+enum class LinearSolverChoice { Auto, Ldlt, Lu, Mumps, Iterative };
 
-// "auto", "ldlt", "lu" or "mumps"; throws SolverError listing the allowed names otherwise.
+// "auto", "ldlt", "lu", "mumps" or "iterative"; throws SolverError listing the allowed names otherwise.
 LinearSolverChoice linear_solver_from_name(const std::string &name);
 std::string linear_solver_name(LinearSolverChoice choice);
-// "auto, ldlt, lu, mumps": for help and error messages.
+// "auto, ldlt, lu, mumps, iterative": for help and error messages.
 std::string linear_solver_names();
 
 enum class SolveStatus {
@@ -74,6 +76,7 @@ struct HelmholtzSolution {
   std::string factorisation;              // "ldlt", "lu", "mumps" or "none" (b = 0 or no free DOF), with
                                           // " (earlier factors, BiCGSTAB)" when they were reused
   std::string message;                    // explanation when status != Success
+  int iterations = 0;                     // of an iterative solver (0 for the direct ones)
   bool ok() const { return status == SolveStatus::Success; }
 };
 

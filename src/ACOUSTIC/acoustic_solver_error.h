@@ -20,6 +20,13 @@ class SolverError : public std::runtime_error {
   explicit SolverError(const std::string &message) : std::runtime_error(message) {}
 };
 
+// Thrown by a collective function on the ranks that found nothing wrong
+// when another rank threw SolverError: the message is on that rank.
+class SolverErrorElsewhere : public SolverError {
+ public:
+  SolverErrorElsewhere() : SolverError("invalid input on another rank") {}
+};
+
 }    // namespace Acoustic
 
 #endif

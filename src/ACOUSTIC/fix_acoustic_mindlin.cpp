@@ -17,9 +17,10 @@
    Two-time-scale coupling of an ultrasonic vibration to the DEM: at every
    step that is a multiple of N (before the forces of that step) the steady
    harmonic response of the contact network to a basal drive is solved
-   (network gathered on rank 0; the MUMPS factorisation runs on all ranks),
-   and each contact's friction factor is set from the tangential vibration
-   it feels (Mindlin law).
+   (direct solvers: network gathered on rank 0; solver iterative: a Krylov
+   method where the contacts are, ghost amplitudes through LAMMPS's forward
+   and reverse communication), and each contact's friction factor is set
+   from the tangential vibration it feels (Mindlin law).
 ------------------------------------------------------------------------- */
 
 #include "fix_acoustic_mindlin.h"
@@ -47,8 +48,11 @@ using namespace FixConst;
 
 static const char CMD[] = "fix acoustic/mindlin";
 // first word of the global restart state since it holds the settings'
-// signature; before, the first word was the step of the last update (>= -1)
+// signature (-2: 14 statistics, -3: NVECTOR); before, the first word was the
+// step of the last update (>= -1) and 14 statistics followed
 static constexpr double RESTART_WITH_SIGNATURE = -2.0;
+static constexpr double RESTART_WITH_ITERATIONS = -3.0;
+static constexpr int NVECTOR_BEFORE_ITERATIONS = 14;
 
 // FNV-1a: a 64-bit hash of a sequence of 64-bit words
 static constexpr std::uint64_t FNV_OFFSET = 1469598103934665603ULL;
@@ -66,7 +70,8 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), source_groupbit(0), source_wall(-1), direction_axis(-1), direction_given(false), source_mode(ALL),
     solver_choice(Acoustic::LinearSolverChoice::Auto), reuse(false), ndof(0), damped(0), last_update(-1),
     atoms_at_end(0), settings_signature(FNV_OFFSET), restart_settings_differ(false), q_atom(nullptr),
-    q_restored(false), amplitude_atom(nullptr), contact_array(nullptr), ncontact_rows(0), maxcontact_rows(0)
+    q_restored(false), amplitude_atom(nullptr), contact_array(nullptr), ncontact_rows(0), maxcontact_rows(0),
+    last_solution_valid(false), comm_mode(COMM_AMPLITUDES), halo_width(0)
 {
   if (narg < 10)
     error->all(FLERR, "Illegal {} command: expected fix ID group-ID acoustic/mindlin N "
@@ -126,7 +131,11 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
                       "only; use solver lu or auto with damping", CMD);
 
   ndof = Acoustic::dofs_per_grain(dim, settings.model);
-  comm_forward = 2 * ndof;
+  const bool iterative = (solver_choice == Acoustic::LinearSolverChoice::Iterative);
+  // the amplitudes of a grain; the distributed solve also sends the
+  // ndof x ndof diagonal block of a grain (complex) in both directions
+  comm_forward = iterative ? 2 * ndof * ndof : 2 * ndof;
+  comm_reverse = iterative ? 2 * ndof * ndof : 0;
 
   // outputs
   vector_flag = 1;
@@ -153,12 +162,21 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
   network.reset(new VibrationNetwork(lmp, settings, CMD));
   // collective.  solver mumps: every rank takes part in the factorisation
   // (MUMPS then sums in the order messages arrive: not bitwise reproducible);
-  // auto: MUMPS on rank 0 alone, the same answer every run
-  const bool team = (solver_choice == Acoustic::LinearSolverChoice::Mumps);
-  solver.reset(new Acoustic::HelmholtzSolver(solver_choice, 1e-6, team ? world : MPI_COMM_SELF));
-  // reuse yes: between two updates few contacts change, precondition with the
-  // last factors (faster, but the factors then depend on the earlier updates)
-  solver->set_reuse_factorisation(reuse);
+  // auto: MUMPS on rank 0 alone, the same answer every run; iterative: every
+  // rank, its own contacts
+  try {
+    if (iterative) {
+      krylov.reset(new Acoustic::KrylovHelmholtzSolver(world, krylov_settings));
+    } else {
+      const bool team = (solver_choice == Acoustic::LinearSolverChoice::Mumps);
+      solver.reset(new Acoustic::HelmholtzSolver(solver_choice, 1e-6, team ? world : MPI_COMM_SELF));
+      // reuse yes: between two updates few contacts change, precondition with the
+      // last factors (faster, but the factors then depend on the earlier updates)
+      solver->set_reuse_factorisation(reuse);
+    }
+  } catch (Acoustic::SolverError &e) {
+    error->all(FLERR, "{}: {}", CMD, e.what());
+  }
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -245,10 +263,44 @@ void FixAcousticMindlin::parse_keywords(int iarg, int narg, char **arg)
       } catch (Acoustic::SolverError &e) {
         error->all(FLERR, "Illegal {} command: {}", CMD, e.what());
       }
+      if (solver_choice == Acoustic::LinearSolverChoice::Iterative &&
+          !Acoustic::KrylovHelmholtzSolver::available())
+        error->all(FLERR, "Illegal {} command: solver iterative needs an ACOUSTIC package built "
+                          "with PETSc (complex scalars; Debian: libpetsc-complex-dev); use solver "
+                          "auto, or rebuild LAMMPS with PETSc", CMD);
+      iarg += 2;
+    } else if (key == "tolerance") {
+      need(1);
+      krylov_settings.tolerance = VibrationNetworkSettings::finite_number(arg[iarg + 1], CMD, "tolerance", lmp);
+      if (!(krylov_settings.tolerance > 0.0 && krylov_settings.tolerance < 1.0))
+        error->all(FLERR, "Illegal {} command: tolerance must be in (0, 1), got {}", CMD,
+                   krylov_settings.tolerance);
+      iarg += 2;
+    } else if (key == "max_iterations") {
+      need(1);
+      krylov_settings.max_iterations = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (krylov_settings.max_iterations < 1)
+        error->all(FLERR, "Illegal {} command: max_iterations must be >= 1, got {}", CMD,
+                   krylov_settings.max_iterations);
+      iarg += 2;
+    } else if (key == "shift") {
+      need(1);
+      krylov_settings.shift = VibrationNetworkSettings::finite_number(arg[iarg + 1], CMD, "shift", lmp);
+      if (krylov_settings.shift < 0.0)
+        error->all(FLERR, "Illegal {} command: shift must be >= 0, got {}", CMD, krylov_settings.shift);
+      iarg += 2;
+    } else if (key == "preconditioner") {
+      need(1);
+      try {
+        krylov_settings.preconditioner = Acoustic::krylov_preconditioner_from_name(arg[iarg + 1]);
+      } catch (Acoustic::SolverError &e) {
+        error->all(FLERR, "Illegal {} command: {}", CMD, e.what());
+      }
       iarg += 2;
     } else {
       error->all(FLERR, "Illegal {} command: unknown keyword {}; keywords are direction, mode, "
-                        "stiffness, kappa_scale, ratio, cmu, mu_min, model, damping, solver, reuse", CMD, key);
+                        "stiffness, kappa_scale, ratio, cmu, mu_min, model, damping, solver, reuse, "
+                        "tolerance, max_iterations, preconditioner, shift", CMD, key);
     }
   }
 }
@@ -405,44 +457,96 @@ void FixAcousticMindlin::post_run()
 }
 
 /* ----------------------------------------------------------------------
-   rank 0: prescribed DOFs of the source and the Helmholtz solve; false if
-   the solve failed (singular, inaccurate: a WARNING) or the input is
-   invalid (failure holds the ERROR message)
+   the prescribed DOFs of a network (gathered or one processor's part) and
+   their amplitudes: the source grains, the source wall moving with the
+   drive, every other wall clamped
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::drive_dofs(const Acoustic::ContactNetwork &net,
+                                    const std::vector<int> &source_grains,
+                                    const std::vector<int> &wall_nodes, std::vector<int> &dofs,
+                                    Eigen::VectorXcd &values) const
+{
+  const int dim = domain->dimension;
+  std::vector<std::complex<double>> amplitudes;
+  dofs.clear();
+  for (std::size_t k = 0; k < wall_nodes.size(); k++) {
+    const bool source = static_cast<int>(k) == source_wall;
+    for (int d = 0; d < ndof; d++) {
+      dofs.push_back(net.dof(wall_nodes[k], d));
+      amplitudes.push_back((source && d < dim) ? direction[d] : 0.0);
+    }
+  }
+  for (int g : source_grains) {
+    if (source_mode == ALL) {
+      for (int k = 0; k < dim; k++) {
+        dofs.push_back(net.dof(g, k));
+        amplitudes.push_back(direction[k]);
+      }
+      for (int k = dim; k < ndof; k++) {    // rotations of a rigid vibrating base: none
+        dofs.push_back(net.dof(g, k));
+        amplitudes.push_back(0.0);
+      }
+    } else {
+      dofs.push_back(net.dof(g, direction_axis));
+      amplitudes.push_back(direction[direction_axis]);
+    }
+  }
+  values.resize(static_cast<Eigen::Index>(amplitudes.size()));
+  for (std::size_t k = 0; k < amplitudes.size(); k++) values[k] = amplitudes[k];
+}
+
+/* ----------------------------------------------------------------------
+   the statistics of a solve; false with a WARNING (rank 0) if it failed
+------------------------------------------------------------------------- */
+
+bool FixAcousticMindlin::report_solve(const Acoustic::HelmholtzSolution &sol,
+                                      const Acoustic::SolverTimings &timing, double assembly_time,
+                                      double total_time)
+{
+  stats[RESIDUAL] = sol.relative_residual;
+  stats[TIME_ASSEMBLY] = assembly_time;
+  stats[TIME_FACTORISATION] = timing.analysis + timing.factorisation;
+  stats[TIME_SOLVE] = total_time - assembly_time - stats[TIME_FACTORISATION];
+  stats[NITERATIONS] = sol.iterations;
+  if (solver) {
+    stats[NANALYSES] = counts_before[0] + static_cast<double>(solver->num_analyses());
+    stats[NFACTORISATIONS] = counts_before[1] + static_cast<double>(solver->num_factorisations());
+    stats[NREUSES] = counts_before[2] + static_cast<double>(solver->num_reuses());
+  } else {
+    stats[NREUSES] = counts_before[2] + static_cast<double>(krylov->num_reuses());
+  }
+  if (sol.ok()) return true;
+  if (comm->me != 0) return false;
+  if (krylov)
+    error->warning(FLERR, "{}: the iterative Helmholtz solve at f = {} failed ({}; relative "
+                          "residual {:.3g} after {} iterations); keeping the previous friction "
+                          "factors. The Krylov method needs damping (damping 0.01 or more) or a "
+                          "drive below the band; an undamped network driven inside its band is "
+                          "the direct solvers' job: use solver auto",
+                   CMD, frequency, sol.message, sol.relative_residual, sol.iterations);
+  else
+    error->warning(FLERR, "{}: the Helmholtz solve at f = {} failed ({}: {}; relative residual "
+                          "{:.3g}); keeping the previous friction factors. A frequency on a "
+                          "resonance of an undamped network is singular: add damping or move f",
+                   CMD, frequency, Acoustic::solve_status_name(sol.status), sol.message,
+                   sol.relative_residual);
+  return false;
+}
+
+/* ----------------------------------------------------------------------
+   rank 0: the Helmholtz solve of the gathered network; false if the solve
+   failed (singular, inaccurate: a WARNING) or the input is invalid
+   (failure holds the ERROR message)
 ------------------------------------------------------------------------- */
 
 bool FixAcousticMindlin::solve_drive(std::string &failure)
 {
   const double t0 = MPI_Wtime();
   const Acoustic::ContactNetwork &net = network->network();
-  const int dim = domain->dimension;
   std::vector<int> prescribed;
-  std::vector<std::complex<double>> values;
-  // the walls: the source plane moves with the drive, every other one is clamped
-  const std::vector<int> &walls = network->wall_nodes();
-  for (std::size_t k = 0; k < walls.size(); k++) {
-    const bool source = static_cast<int>(k) == source_wall;
-    for (int d = 0; d < ndof; d++) {
-      prescribed.push_back(net.dof(walls[k], d));
-      values.push_back((source && d < dim) ? direction[d] : 0.0);
-    }
-  }
-  for (int g : network->marked_grains(0)) {
-    if (source_mode == ALL) {
-      for (int k = 0; k < dim; k++) {
-        prescribed.push_back(net.dof(g, k));
-        values.push_back(direction[k]);
-      }
-      for (int k = dim; k < ndof; k++) {    // rotations of a rigid vibrating base: none
-        prescribed.push_back(net.dof(g, k));
-        values.push_back(0.0);
-      }
-    } else {
-      prescribed.push_back(net.dof(g, direction_axis));
-      values.push_back(direction[direction_axis]);
-    }
-  }
-  Eigen::VectorXcd qp(values.size());
-  for (std::size_t k = 0; k < values.size(); k++) qp[k] = values[k];
+  Eigen::VectorXcd qp;
+  drive_dofs(net, network->marked_grains(0), network->wall_nodes(), prescribed, qp);
 
   Acoustic::HelmholtzSolution sol;
   double t1 = t0;
@@ -457,23 +561,103 @@ bool FixAcousticMindlin::solve_drive(std::string &failure)
     failure = fmt::format("{}: {}", CMD, e.what());
     return false;
   }
-  const double t2 = MPI_Wtime();
-  const Acoustic::SolverTimings &timing = solver->last_timings();
-  stats[RESIDUAL] = sol.relative_residual;
-  stats[TIME_ASSEMBLY] = t1 - t0;
-  stats[TIME_FACTORISATION] = timing.analysis + timing.factorisation;
-  stats[TIME_SOLVE] = (t2 - t1) - stats[TIME_FACTORISATION];
-  stats[NANALYSES] = counts_before[0] + static_cast<double>(solver->num_analyses());
-  stats[NFACTORISATIONS] = counts_before[1] + static_cast<double>(solver->num_factorisations());
-  stats[NREUSES] = counts_before[2] + static_cast<double>(solver->num_reuses());
-  if (!sol.ok()) {
-    error->warning(FLERR, "{}: the Helmholtz solve at f = {} failed ({}: {}; relative residual "
-                          "{:.3g}); keeping the previous friction factors. A frequency on a "
-                          "resonance of an undamped network is singular: add damping or move f",
-                   CMD, frequency, Acoustic::solve_status_name(sol.status), sol.message,
-                   sol.relative_residual);
-    return false;
+  if (!report_solve(sol, solver->last_timings(), t1 - t0, MPI_Wtime() - t0)) return false;
+  solution = sol.q;
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   the Halo of the distributed solve: LAMMPS's forward and reverse
+   communication of this fix, between the grains of this processor's part
+   of the network and its atoms
+------------------------------------------------------------------------- */
+
+class FixAcousticMindlin::Halo : public Acoustic::HaloExchange {
+ public:
+  Halo(FixAcousticMindlin *fix, const LocalNetworkPart &part) : fix(fix), part(part) {}
+
+  void forward(std::complex<double> *values, int width) override
+  {
+    fix->begin_halo(2 * width);
+    for (int g = 0; g < part.num_owned; g++) copy_in(g, values, width);
+    fix->comm->forward_comm(fix, 2 * width);
+    for (int g = part.num_owned; g < static_cast<int>(part.atoms.size()); g++) copy_out(g, values, width, false);
+    fix->comm_mode = COMM_AMPLITUDES;
   }
+
+  void reverse(std::complex<double> *values, int width) override
+  {
+    fix->begin_halo(2 * width);
+    for (int g = part.num_owned; g < static_cast<int>(part.atoms.size()); g++) copy_in(g, values, width);
+    fix->comm->reverse_comm(fix, 2 * width);
+    for (int g = 0; g < part.num_owned; g++) copy_out(g, values, width, true);
+    fix->comm_mode = COMM_AMPLITUDES;
+  }
+
+ private:
+  FixAcousticMindlin *fix;
+  const LocalNetworkPart &part;
+
+  void copy_in(int g, const std::complex<double> *values, int width)
+  {
+    double *to = &fix->halo_values[static_cast<std::size_t>(part.atoms[g]) * 2 * width];
+    for (int k = 0; k < width; k++) {
+      to[2 * k] = values[g * width + k].real();
+      to[2 * k + 1] = values[g * width + k].imag();
+    }
+  }
+  void copy_out(int g, std::complex<double> *values, int width, bool add)
+  {
+    const double *from = &fix->halo_values[static_cast<std::size_t>(part.atoms[g]) * 2 * width];
+    for (int k = 0; k < width; k++) {
+      const std::complex<double> v(from[2 * k], from[2 * k + 1]);
+      values[g * width + k] = add ? values[g * width + k] + v : v;
+    }
+  }
+};
+
+void FixAcousticMindlin::begin_halo(int width)
+{
+  comm_mode = COMM_HALO;
+  halo_width = width;
+  halo_values.assign(static_cast<std::size_t>(atom->nlocal + atom->nghost) * width, 0.0);
+}
+
+/* ----------------------------------------------------------------------
+   every rank: the Krylov solve of this processor's part of the network;
+   false (a WARNING) if it did not converge
+------------------------------------------------------------------------- */
+
+bool FixAcousticMindlin::solve_distributed()
+{
+  const double t0 = MPI_Wtime();
+  const LocalNetworkPart &part = network->local_part();
+  Acoustic::DistributedHelmholtzProblem problem;
+  problem.network = part.network.get();
+  problem.num_owned = part.num_owned;
+  problem.omega = 2.0 * M_PI * frequency;
+  drive_dofs(*part.network, part.marked[0], part.wall_nodes, problem.prescribed_dofs,
+             problem.prescribed_values);
+
+  // reuse yes: start from the amplitudes of the last update, which the atoms carry
+  Eigen::VectorXcd guess;
+  if (reuse && last_solution_valid) {
+    guess = Eigen::VectorXcd::Zero(part.network->num_dofs());
+    for (int g = 0; g < part.num_owned; g++)
+      for (int k = 0; k < ndof; k++)
+        guess[g * ndof + k] = std::complex<double>(q_atom[part.atoms[g]][2 * k], q_atom[part.atoms[g]][2 * k + 1]);
+  }
+  Halo halo(this, part);
+  Acoustic::HelmholtzSolution sol;
+  CollectiveError errors(lmp);
+  try {
+    sol = krylov->solve(problem, halo, guess.size() ? &guess : nullptr);
+  } catch (Acoustic::SolverErrorElsewhere &) {
+  } catch (Acoustic::SolverError &e) {
+    errors.report(fmt::format("{}: {}", CMD, e.what()));
+  }
+  errors.raise(FLERR);
+  if (!report_solve(sol, krylov->last_timings(), 0.0, MPI_Wtime() - t0)) return false;
   solution = sol.q;
   return true;
 }
@@ -485,14 +669,17 @@ bool FixAcousticMindlin::solve_drive(std::string &failure)
 void FixAcousticMindlin::update_factors()
 {
   const double t0 = MPI_Wtime();
-  network->build(groupbit, {source_groupbit});
+  if (krylov) network->build_local(groupbit, {source_groupbit});
+  else network->build(groupbit, {source_groupbit});
   stats[NCONTACTS] = static_cast<double>(network->ncontacts_total());
   stats[TIME_GATHER] = MPI_Wtime() - t0;
   stats[TIME_ASSEMBLY] = stats[TIME_FACTORISATION] = stats[TIME_SOLVE] = stats[TIME_UPDATE] = 0.0;
   last_update = update->ntimestep;
 
   int solved = 1;
-  if (frequency > 0.0) {
+  if (frequency > 0.0 && krylov) {
+    solved = solve_distributed() ? 1 : 0;
+  } else if (frequency > 0.0) {
     std::string failure;
     if (comm->me == 0) {
       solved = solve_drive(failure) ? 1 : 0;
@@ -512,6 +699,7 @@ void FixAcousticMindlin::update_factors()
     set_amplitudes();
     evaluate_contacts(true);
   }
+  last_solution_valid = solved != 0 || last_solution_valid;
   factor_statistics(network->local_contacts());
   const double t2 = MPI_Wtime();
   stats[TIME_UPDATE] = t2 - t1;
@@ -525,7 +713,17 @@ void FixAcousticMindlin::update_factors()
 void FixAcousticMindlin::set_amplitudes()
 {
   const int nlocal = atom->nlocal;
-  if (frequency > 0.0) {
+  if (frequency > 0.0 && krylov) {
+    const LocalNetworkPart &part = network->local_part();
+    for (int i = 0; i < nlocal; i++)
+      for (int k = 0; k < 2 * ndof; k++) q_atom[i][k] = 0.0;
+    for (int g = 0; g < part.num_owned; g++)
+      for (int k = 0; k < ndof; k++) {
+        q_atom[part.atoms[g]][2 * k] = solution[g * ndof + k].real();
+        q_atom[part.atoms[g]][2 * k + 1] = solution[g * ndof + k].imag();
+      }
+    comm->forward_comm(this);
+  } else if (frequency > 0.0) {
     network->scatter(solution, q_atom, groupbit);
     comm->forward_comm(this);
   } else {
@@ -653,6 +851,8 @@ std::uint64_t FixAcousticMindlin::atoms_fingerprint() const
 
 double FixAcousticMindlin::compute_vector(int n)
 {
+  // an index from outside (the library interface) may be anything
+  if (n < 0 || n >= NVECTOR) return 0.0;
   return stats[n];
 }
 
@@ -667,7 +867,7 @@ void FixAcousticMindlin::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
   double list[NVECTOR + 4];
-  list[0] = RESTART_WITH_SIGNATURE;
+  list[0] = RESTART_WITH_ITERATIONS;
   list[1] = static_cast<double>(last_update);
   for (int k = 0; k < NVECTOR; k++) list[k + 2] = stats[k];
   list[NVECTOR + 2] = static_cast<double>(settings_signature >> 32);
@@ -680,15 +880,17 @@ void FixAcousticMindlin::write_restart(FILE *fp)
 void FixAcousticMindlin::restart(char *buf)
 {
   const auto *list = reinterpret_cast<double *>(buf);
-  const bool with_signature = (list[0] == RESTART_WITH_SIGNATURE);
-  if (with_signature) {
+  // the number of statistics in the file: NVECTOR, or those of earlier versions
+  int nstats = NVECTOR_BEFORE_ITERATIONS;
+  if (list[0] == RESTART_WITH_SIGNATURE || list[0] == RESTART_WITH_ITERATIONS) {
+    if (list[0] == RESTART_WITH_ITERATIONS) nstats = NVECTOR;
     list++;
-    const std::uint64_t written = (static_cast<std::uint64_t>(list[NVECTOR + 1]) << 32) |
-        static_cast<std::uint64_t>(list[NVECTOR + 2]);
+    const std::uint64_t written = (static_cast<std::uint64_t>(list[nstats + 1]) << 32) |
+        static_cast<std::uint64_t>(list[nstats + 2]);
     restart_settings_differ = (written != settings_signature);
   }
   last_update = static_cast<bigint>(list[0]);
-  for (int k = 0; k < NVECTOR; k++) stats[k] = list[k + 1];
+  for (int k = 0; k < NVECTOR; k++) stats[k] = (k < nstats) ? list[k + 1] : 0.0;
   // the solver of this process counts from 0: its counts add to those of the writer
   counts_before[0] = stats[NANALYSES];
   counts_before[1] = stats[NFACTORISATIONS];
@@ -753,7 +955,7 @@ void FixAcousticMindlin::unpack_restart(int nlocal, int nth)
   // restart files written before the DOF amplitudes were stored hold none
   const bool with_q = (count == size_restart(nlocal));
   for (int k = 0; k < 2 * ndof; k++) q_atom[nlocal][k] = with_q ? extra[nlocal][m++] : 0.0;
-  if (with_q) q_restored = true;
+  if (with_q) q_restored = last_solution_valid = true;
 }
 
 int FixAcousticMindlin::size_restart(int /*nlocal*/)
@@ -772,6 +974,11 @@ int FixAcousticMindlin::pack_forward_comm(int n, int *list, double *buf, int /*p
                                           int * /*pbc*/)
 {
   int m = 0;
+  if (comm_mode == COMM_HALO) {
+    for (int ii = 0; ii < n; ii++)
+      for (int k = 0; k < halo_width; k++) buf[m++] = halo_values[static_cast<std::size_t>(list[ii]) * halo_width + k];
+    return m;
+  }
   for (int ii = 0; ii < n; ii++)
     for (int k = 0; k < 2 * ndof; k++) buf[m++] = q_atom[list[ii]][k];
   return m;
@@ -780,8 +987,32 @@ int FixAcousticMindlin::pack_forward_comm(int n, int *list, double *buf, int /*p
 void FixAcousticMindlin::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (comm_mode == COMM_HALO) {
+    for (int i = first; i < first + n; i++)
+      for (int k = 0; k < halo_width; k++) halo_values[static_cast<std::size_t>(i) * halo_width + k] = buf[m++];
+    return;
+  }
   for (int i = first; i < first + n; i++)
     for (int k = 0; k < 2 * ndof; k++) q_atom[i][k] = buf[m++];
+}
+
+/* ----------------------------------------------------------------------
+   reverse communication: only the halo exchanges of the distributed solve
+------------------------------------------------------------------------- */
+
+int FixAcousticMindlin::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int k = 0; k < halo_width; k++) buf[m++] = halo_values[static_cast<std::size_t>(i) * halo_width + k];
+  return m;
+}
+
+void FixAcousticMindlin::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int ii = 0; ii < n; ii++)
+    for (int k = 0; k < halo_width; k++) halo_values[static_cast<std::size_t>(list[ii]) * halo_width + k] += buf[m++];
 }
 
 double FixAcousticMindlin::memory_usage()

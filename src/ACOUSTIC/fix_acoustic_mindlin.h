@@ -23,6 +23,7 @@ FixStyle(acoustic/mindlin,FixAcousticMindlin);
 #include "fix.h"
 
 #include "acoustic_helmholtz_solver.h"
+#include "acoustic_krylov_solver.h"
 #include "acoustic_mindlin_law.h"
 #include "vibration_network.h"
 
@@ -55,6 +56,8 @@ class FixAcousticMindlin : public Fix {
   int maxsize_restart() override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
 
   enum SourceMode { ALL, NORMAL };
@@ -75,6 +78,7 @@ class FixAcousticMindlin : public Fix {
     NFACTORISATIONS,       // numeric factorisations since then
     NREUSES,               // solves done with earlier factors (BiCGSTAB) since then
     TIME_TOTAL,            // wall time of all updates since then
+    NITERATIONS,           // Krylov iterations of the last solve (solver iterative)
     NVECTOR
   };
 
@@ -92,9 +96,11 @@ class FixAcousticMindlin : public Fix {
   Acoustic::MindlinFrictionLaw law;
   Acoustic::LinearSolverChoice solver_choice;
   bool reuse;    // solve by the last solution or earlier factors when they still fit
+  Acoustic::KrylovSettings krylov_settings;
 
   std::unique_ptr<VibrationNetwork> network;
-  std::unique_ptr<Acoustic::HelmholtzSolver> solver;
+  std::unique_ptr<Acoustic::HelmholtzSolver> solver;           // direct solvers, on rank 0
+  std::unique_ptr<Acoustic::KrylovHelmholtzSolver> krylov;     // solver iterative, every rank
   int ndof;      // DOFs per grain of the network
   int damped;
 
@@ -105,12 +111,24 @@ class FixAcousticMindlin : public Fix {
 
   double **q_atom;            // complex DOF amplitudes per atom, (re, im) pairs
   bool q_restored;            // q_atom of this process's atoms came from a restart file
+  bool last_solution_valid;   // q_atom holds the solution of an update (a start for reuse yes)
   double **amplitude_atom;    // per-atom output: translational amplitudes
   double **contact_array;     // local output: one row per contact
   int ncontact_rows, maxcontact_rows;
   double stats[NVECTOR];
   double counts_before[3];       // analyses, factorisations, reuses of earlier processes (restart)
   Eigen::VectorXcd solution;    // rank 0: DOF amplitudes of the last successful solve
+                                // (solver iterative: of this processor's part)
+
+  // forward and reverse communication: the DOF amplitudes q_atom, or the
+  // values of a halo exchange of the distributed solve (halo_width doubles
+  // per atom in halo_values, indexed by local atom)
+  enum CommMode { COMM_AMPLITUDES, COMM_HALO };
+  CommMode comm_mode;
+  int halo_width;
+  std::vector<double> halo_values;
+  class Halo;
+  void begin_halo(int width);
 
   void parse_keywords(int iarg, int narg, char **arg);
   void init_source();
@@ -119,6 +137,12 @@ class FixAcousticMindlin : public Fix {
   bool factors_are_current() const;
   void update_factors();
   bool solve_drive(std::string &failure);
+  bool solve_distributed();
+  void drive_dofs(const Acoustic::ContactNetwork &net, const std::vector<int> &source_grains,
+                  const std::vector<int> &wall_nodes, std::vector<int> &dofs,
+                  Eigen::VectorXcd &values) const;
+  bool report_solve(const Acoustic::HelmholtzSolution &sol, const Acoustic::SolverTimings &timing,
+                    double assembly_time, double total_time);
   void set_amplitudes();
   void evaluate_contacts(bool set_factors);
   void factor_statistics(const std::vector<GranularContact> &contacts);

@@ -245,37 +245,13 @@ void VibrationNetwork::apply_settings(GranularContact &c) const
 std::vector<double> VibrationNetwork::pack_contacts(CollectiveError &errors)
 {
   tagint *tag = atom->tag;
-  double *rmass = atom->rmass;
   std::vector<double> words;
   words.reserve(contacts.size() * CONTACT_WORDS);
   for (auto &c : contacts) {
-    const bool wall = c.wall >= 0;
-    // a wall: the grain of ID wall_tag_base + plane, of infinite mass
-    const tagint tag_j = wall ? wall_tag_base + c.wall : tag[c.j];
-    const double mass_j = wall ? INFINITY : rmass[c.j];
-    const std::string what = wall
-        ? fmt::format("contact of atom {} with fix {}", tag[c.i], walls()[c.wall].fix_id)
-        : fmt::format("contact of atoms {} and {}", tag[c.i], tag_j);
     double cn = 0.0, ct = 0.0;
-    try {
-      apply_settings(c);
-      if (c.owned && c.kn > 0.0 && settings.damping_ratio > 0.0) {
-        cn = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kn, rmass[c.i], mass_j);
-        ct = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kt, rmass[c.i], mass_j);
-      }
-    } catch (Acoustic::SolverError &e) {
-      errors.report(fmt::format("{}: {}: {}", command, what, e.what()));
-      continue;
-    }
-    if (!(std::isfinite(c.kn) && std::isfinite(c.kt) && std::isfinite(cn) && std::isfinite(ct))) {
-      errors.report(fmt::format("{}: {} has a non-finite stiffness (k_n = {}, k_t = {}) or "
-                                "dashpot; check the contact model's coefficients and the keywords "
-                                "stiffness, kappa_scale, ratio, damping", command, what, c.kn, c.kt));
-      continue;
-    }
-
-    // open or tensile contacts carry no stiffness and stay out of the network
-    if (!c.owned || !(c.kn > 0.0)) continue;
+    if (!network_contact(c, cn, ct, errors)) continue;
+    // a wall: the grain of ID wall_tag_base + plane
+    const tagint tag_j = (c.wall >= 0) ? wall_tag_base + c.wall : tag[c.j];
     // from the lower to the higher ID (a wall's is the higher): the network is
     // then the same whatever the number of processors
     const bool flip = tag[c.i] > tag_j;
@@ -289,6 +265,45 @@ std::vector<double> VibrationNetwork::pack_contacts(CollectiveError &errors)
     words.push_back(ct);
   }
   return words;
+}
+
+/* ----------------------------------------------------------------------
+   the stiffnesses of contact c from the settings and its dashpots cn, ct;
+   true if it belongs to the network (counted here, closed); a contact
+   with a bad stiffness is reported and left out
+------------------------------------------------------------------------- */
+
+bool VibrationNetwork::network_contact(GranularContact &c, double &cn, double &ct,
+                                       CollectiveError &errors)
+{
+  tagint *tag = atom->tag;
+  double *rmass = atom->rmass;
+  const bool wall = c.wall >= 0;
+  // a wall is a body of infinite mass
+  const double mass_j = wall ? INFINITY : rmass[c.j];
+  auto what = [&]() {
+    return wall ? fmt::format("contact of atom {} with fix {}", tag[c.i], walls()[c.wall].fix_id)
+                : fmt::format("contact of atoms {} and {}", tag[c.i], tag[c.j]);
+  };
+  cn = ct = 0.0;
+  try {
+    apply_settings(c);
+    if (c.owned && c.kn > 0.0 && settings.damping_ratio > 0.0) {
+      cn = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kn, rmass[c.i], mass_j);
+      ct = Acoustic::dashpot_coefficient(settings.damping_ratio, c.kt, rmass[c.i], mass_j);
+    }
+  } catch (Acoustic::SolverError &e) {
+    errors.report(fmt::format("{}: {}: {}", command, what(), e.what()));
+    return false;
+  }
+  if (!(std::isfinite(c.kn) && std::isfinite(c.kt) && std::isfinite(cn) && std::isfinite(ct))) {
+    errors.report(fmt::format("{}: {} has a non-finite stiffness (k_n = {}, k_t = {}) or "
+                              "dashpot; check the contact model's coefficients and the keywords "
+                              "stiffness, kappa_scale, ratio, damping", command, what(), c.kn, c.kt));
+    return false;
+  }
+  // open or tensile contacts carry no stiffness and stay out of the network
+  return c.owned && c.kn > 0.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -306,11 +321,7 @@ std::vector<double> VibrationNetwork::pack_grains(int groupbit,
   std::vector<double> words;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    if (!(std::isfinite(rmass[i]) && rmass[i] > 0.0 && std::isfinite(radius[i]) &&
-          radius[i] > 0.0))
-      errors.report(fmt::format("{}: atom {} has mass {} and radius {}; every atom of the network "
-                                "needs a positive, finite mass and radius (set density, diameter)",
-                                command, tag[i], rmass[i], radius[i]));
+    check_grain(i, errors);
     words.push_back(static_cast<double>(tag[i]));
     words.push_back(rmass[i]);
     words.push_back(radius[i]);
@@ -320,6 +331,86 @@ std::vector<double> VibrationNetwork::pack_grains(int groupbit,
     words.push_back(static_cast<double>(markers));
   }
   return words;
+}
+
+void VibrationNetwork::check_grain(int i, CollectiveError &errors) const
+{
+  const double mass = atom->rmass[i], radius = atom->radius[i];
+  if (!(std::isfinite(mass) && mass > 0.0 && std::isfinite(radius) && radius > 0.0))
+    errors.report(fmt::format("{}: atom {} has mass {} and radius {}; every atom of the network "
+                              "needs a positive, finite mass and radius (set density, diameter)",
+                              command, atom->tag[i], mass, radius));
+}
+
+/* ----------------------------------------------------------------------
+   this processor's part of the network: owned atoms of the group, the
+   ghosts its counted contacts touch, the wall planes
+------------------------------------------------------------------------- */
+
+void VibrationNetwork::build_local(int groupbit, const std::vector<int> &marker_groupbits)
+{
+  CollectiveError errors(lmp);
+  walker.collect(contacts, groupbit, errors);
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  int *mask = atom->mask;
+  std::vector<int> grain_of_atom(nall, -1);
+  part = LocalNetworkPart();
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    check_grain(i, errors);
+    grain_of_atom[i] = static_cast<int>(part.atoms.size());
+    part.atoms.push_back(i);
+  }
+  part.num_owned = static_cast<int>(part.atoms.size());
+
+  struct Spring {
+    int i, j;    // atom indices, j = -1 - plane for a wall
+    double n[3], kn, kt, cn, ct;
+  };
+  std::vector<Spring> springs;
+  for (auto &c : contacts) {
+    double cn = 0.0, ct = 0.0;
+    if (!network_contact(c, cn, ct, errors)) continue;
+    if (c.wall < 0 && grain_of_atom[c.j] < 0) {
+      grain_of_atom[c.j] = static_cast<int>(part.atoms.size());
+      part.atoms.push_back(c.j);
+    }
+    springs.push_back({c.i, c.wall < 0 ? c.j : -1 - c.wall, {c.n[0], c.n[1], c.n[2]}, c.kn, c.kt, cn, ct});
+  }
+  bigint counts_local[2] = {static_cast<bigint>(springs.size()), static_cast<bigint>(part.num_owned)};
+  bigint counts_all[2];
+  MPI_Allreduce(counts_local, counts_all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  ncontacts_all = counts_all[0];
+  ngrains_all = counts_all[1];
+
+  const int natoms = static_cast<int>(part.atoms.size());
+  std::vector<Acoustic::Grain> grains;
+  grains.reserve(natoms + walls().size());
+  for (int i : part.atoms) grains.push_back({atom->rmass[i], atom->radius[i]});
+  for (std::size_t k = 0; k < walls().size(); k++) {
+    // prescribed nodes: their mass and radius only need to be valid numbers
+    part.wall_nodes.push_back(static_cast<int>(grains.size()));
+    grains.push_back({1.0, 1.0});
+  }
+  part.marked.assign(marker_groupbits.size(), std::vector<int>());
+  for (int g = 0; g < natoms; g++)
+    for (std::size_t k = 0; k < marker_groupbits.size(); k++)
+      if (mask[part.atoms[g]] & marker_groupbits[k]) part.marked[k].push_back(g);
+
+  std::vector<Acoustic::Contact> network_contacts;
+  network_contacts.reserve(springs.size());
+  for (const Spring &s : springs) {
+    const int gj = (s.j >= 0) ? grain_of_atom[s.j] : part.wall_nodes[-1 - s.j];
+    network_contacts.push_back({grain_of_atom[s.i], gj, Eigen::Vector3d(s.n[0], s.n[1], s.n[2]), s.kn,
+                                s.kt, s.cn, s.ct});
+  }
+  try {
+    part.network.reset(new Acoustic::ContactNetwork(domain->dimension, settings.model,
+                                                    std::move(grains), std::move(network_contacts)));
+  } catch (Acoustic::SolverError &e) {
+    errors.report(fmt::format("{}: cannot build the contact network: {}", command, e.what()));
+  }
+  errors.raise(FLERR);
 }
 
 /* ----------------------------------------------------------------------

@@ -54,6 +54,19 @@ struct VibrationNetworkSettings {
                               const std::string &what, class LAMMPS *lmp);
 };
 
+// the part of the network one processor holds, for a distributed solve
+// (Acoustic::KrylovHelmholtzSolver): the group atoms it owns (in the order
+// of their local indices), then the ghost atoms its contacts touch, then the
+// wall planes; the contacts it counts (every contact of the network on
+// exactly one processor)
+struct LocalNetworkPart {
+  std::unique_ptr<Acoustic::ContactNetwork> network;
+  int num_owned = 0;
+  std::vector<int> atoms;                     // local atom index of each grain that is an atom
+  std::vector<std::vector<int>> marked;       // the grains (owned or ghost) of each marker
+  std::vector<int> wall_nodes;                // grain of each wall plane
+};
+
 class VibrationNetwork : protected Pointers {
  public:
   VibrationNetwork(class LAMMPS *, const VibrationNetworkSettings &, const std::string &command);
@@ -73,6 +86,12 @@ class VibrationNetwork : protected Pointers {
   // collective: only walk the contacts of the group (local_contacts()), without
   // building the network
   void collect(int groupbit);
+
+  // collective: walk the contacts of the group and build this processor's
+  // part of the network (local_part()), without gathering it; markers as in
+  // build().  Bad contacts or atoms stop every rank with an ERROR.
+  void build_local(int groupbit, const std::vector<int> &marker_groupbits);
+  const LocalNetworkPart &local_part() const { return part; }
 
   // the contacts listed on this processor (both atoms in the group), with
   // kn and kt replaced by the stiffnesses of the network (from the settings)
@@ -120,8 +139,12 @@ class VibrationNetwork : protected Pointers {
   std::vector<int> sent_counts;
   std::vector<int> sent_grain_index;
 
+  LocalNetworkPart part;
+
   // the steps of build()
   void apply_settings(GranularContact &c) const;
+  bool network_contact(GranularContact &c, double &cn, double &ct, class CollectiveError &errors);
+  void check_grain(int i, class CollectiveError &errors) const;
   std::vector<double> pack_contacts(class CollectiveError &errors);
   std::vector<double> pack_grains(int groupbit, const std::vector<int> &marker_groupbits,
                                   class CollectiveError &errors);

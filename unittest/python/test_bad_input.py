@@ -90,6 +90,13 @@ BAD_INPUTS = [
     ("fix_unknown_solver", FIX + " solver magic", "unknown linear solver 'magic'"),
     ("fix_ldlt_with_damping", FIX + " damping 0.1 solver ldlt", "solver ldlt handles undamped"),
     ("fix_bad_reuse", FIX + " reuse maybe", "Expected boolean parameter instead of 'maybe'"),
+    ("fix_zero_tolerance", FIX + " solver iterative tolerance 0", "tolerance must be in (0, 1), got 0"),
+    ("fix_tolerance_one", FIX + " solver iterative tolerance 1", "tolerance must be in (0, 1), got 1"),
+    ("fix_zero_max_iterations", FIX + " solver iterative max_iterations 0",
+     "max_iterations must be >= 1, got 0"),
+    ("fix_unknown_preconditioner", FIX + " solver iterative preconditioner ilu",
+     "unknown preconditioner 'ilu': allowed are none, shifted"),
+    ("fix_negative_shift", FIX + " solver iterative shift -0.5", "shift must be >= 0, got -0.5"),
     # fix acoustic/mindlin: the system
     ("fix_empty_source", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source empty\nrun 0",
      "source group empty has no atom in the fix group all"),

@@ -1,7 +1,9 @@
 # Dependencies of the ACOUSTIC package: Eigen (dense/sparse linear algebra),
 # SuiteSparse CHOLMOD + UMFPACK (sparse factorisations), MUMPS (parallel
 # sparse symmetric indefinite factorisation, on MPI), Spectra (sparse
-# eigensolvers, header only).  This file is included by LAMMPS's CMake build
+# eigensolvers, header only); optional: PETSc with complex scalars (the
+# distributed Krylov solver, solver iterative; ACOUSTIC_HAVE_PETSC) and METIS
+# (nested-dissection orderings for MUMPS; ACOUSTIC_HAVE_METIS).  This file is included by LAMMPS's CMake build
 # when PKG_ACOUSTIC is on (copy it to cmake/Modules/Packages/ACOUSTIC.cmake of
 # a LAMMPS tree) and by the stand-alone ACOUSTIC build for its unit tests.
 #
@@ -70,8 +72,59 @@ set(ACOUSTIC_INCLUDE_DIRS ${ACOUSTIC_SUITESPARSE_INCLUDE_DIR} ${ACOUSTIC_SPECTRA
     ${ACOUSTIC_MUMPS_INCLUDE_DIR})
 set(ACOUSTIC_LIBRARIES Eigen3::Eigen ${ACOUSTIC_SUITESPARSE_LIBRARIES} ${ACOUSTIC_MUMPS_LIBRARIES}
     ${_acoustic_mpi} ${LAPACK_LIBRARIES} ${BLAS_LIBRARIES})
+set(ACOUSTIC_DEFINITIONS)
+
+# optional: PETSc built with complex scalars, found through its pkg-config
+# file (Debian installs the complex build's under petscdir/petsc-complex;
+# ACOUSTIC_PETSC_PKG_CONFIG_DIR points elsewhere)
+set(ACOUSTIC_PETSC_PKG_CONFIG_DIR "/usr/lib/petscdir/petsc-complex/lib/pkgconfig" CACHE PATH
+    "Directory of the pkg-config file petsc.pc of a PETSc built with complex scalars")
+option(ACOUSTIC_WITH_PETSC "Build the iterative solver of ACOUSTIC (needs complex PETSc)" ON)
+if(ACOUSTIC_WITH_PETSC)
+  find_package(PkgConfig QUIET)
+  if(PKG_CONFIG_FOUND)
+    set(_acoustic_pc_path $ENV{PKG_CONFIG_PATH})
+    set(ENV{PKG_CONFIG_PATH} "${ACOUSTIC_PETSC_PKG_CONFIG_DIR}:$ENV{PKG_CONFIG_PATH}")
+    pkg_check_modules(ACOUSTIC_PETSC QUIET IMPORTED_TARGET GLOBAL petsc)
+    set(ENV{PKG_CONFIG_PATH} "${_acoustic_pc_path}")
+  endif()
+  # complex scalars and 32-bit indices, as petscconf.h says
+  set(ACOUSTIC_PETSC_IS_COMPLEX OFF)
+  if(ACOUSTIC_PETSC_FOUND)
+    find_file(_acoustic_petscconf petscconf.h PATHS ${ACOUSTIC_PETSC_INCLUDE_DIRS} NO_DEFAULT_PATH)
+    if(_acoustic_petscconf)
+      file(STRINGS ${_acoustic_petscconf} _complex REGEX "^#define PETSC_USE_COMPLEX 1")
+      file(STRINGS ${_acoustic_petscconf} _index64 REGEX "^#define PETSC_USE_64BIT_INDICES 1")
+      if(_complex AND NOT _index64)
+        set(ACOUSTIC_PETSC_IS_COMPLEX ON)
+      endif()
+    endif()
+    unset(_acoustic_petscconf CACHE)
+  endif()
+  if(ACOUSTIC_PETSC_FOUND AND ACOUSTIC_PETSC_IS_COMPLEX)
+    message(STATUS "ACOUSTIC: PETSc ${ACOUSTIC_PETSC_VERSION} (complex): solver iterative available")
+    list(APPEND ACOUSTIC_LIBRARIES PkgConfig::ACOUSTIC_PETSC)
+    list(APPEND ACOUSTIC_DEFINITIONS ACOUSTIC_HAVE_PETSC)
+  else()
+    message(STATUS "ACOUSTIC: no PETSc with complex scalars (Debian: libpetsc-complex-dev): "
+      "built without solver iterative")
+  endif()
+endif()
+
+# optional: METIS, the nested-dissection ordering of the MUMPS factorisations in 3D
+find_path(ACOUSTIC_METIS_INCLUDE_DIR metis.h DOC "Directory with metis.h")
+find_library(ACOUSTIC_METIS_LIBRARY NAMES metis)
+if(ACOUSTIC_METIS_INCLUDE_DIR AND ACOUSTIC_METIS_LIBRARY)
+  message(STATUS "ACOUSTIC: METIS orderings for MUMPS available")
+  list(APPEND ACOUSTIC_INCLUDE_DIRS ${ACOUSTIC_METIS_INCLUDE_DIR})
+  list(APPEND ACOUSTIC_LIBRARIES ${ACOUSTIC_METIS_LIBRARY})
+  list(APPEND ACOUSTIC_DEFINITIONS ACOUSTIC_HAVE_METIS)
+else()
+  message(STATUS "ACOUSTIC: no METIS (Debian: libmetis-dev): MUMPS keeps its own orderings")
+endif()
 
 if(TARGET lammps)
   target_include_directories(lammps PRIVATE ${ACOUSTIC_INCLUDE_DIRS})
   target_link_libraries(lammps PRIVATE ${ACOUSTIC_LIBRARIES})
+  target_compile_definitions(lammps PRIVATE ${ACOUSTIC_DEFINITIONS})
 endif()

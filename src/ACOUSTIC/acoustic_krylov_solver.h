@@ -1,0 +1,126 @@
+/* ----------------------------------------------------------------------
+   ACOUSTIC package numerics: the damped Helmholtz problem solved by a
+   Krylov method where the network lies, in a domain decomposition.
+
+   Each rank holds its part of the network (see acoustic_halo_exchange.h):
+   a ContactNetwork whose grains are the ones it owns (the first
+   num_owned), then ghosts, then prescribed nodes, and whose contacts are
+   those it counts (every contact of the whole network on exactly one
+   rank).  The operator
+     A = K + i omega C - omega^2 M
+   is applied without assembling it anywhere: each rank multiplies by its
+   local K and C (assembled by ContactNetwork, the same code as for the
+   gathered network) and by the masses of the grains it owns; ghost values
+   come in by a forward halo exchange, ghost products go back to their
+   owners by a reverse one.  The unknowns are the free DOFs of the owned
+   grains; b = -(A_FP q_P) on them, from the prescribed values of every
+   prescribed DOF the rank holds (owned, ghost or node).
+
+   The Krylov method is PETSc's (KSP on a shell matrix, on the ranks'
+   communicator): BiCGStab by default.  (COCG, the natural method for a
+   complex symmetric A, is KSPCG with KSP_CG_SYMMETRIC in PETSc, but its
+   test for an indefinite matrix stops it on these systems.)
+   Preconditioner "shifted" (default): the shifted operator
+     P = K + i omega C - (1 - i shift) omega^2 M,
+   assembled as a PETSc matrix over the ranks and inverted approximately by
+   incomplete LU on each rank's unknowns plus one layer of its neighbours'
+   (additive Schwarz, PCASM with overlap 1 and ILU(1)); "none": none.
+   Convergence: ||b - A x|| <= tolerance ||b||, checked at every iteration
+   on the recursively updated residual and once more on the true residual
+   at the end.  PETSc options with the prefix "acoustic_" (e.g. in the
+   environment variable PETSC_OPTIONS) override the method and the
+   preconditioner (-acoustic_ksp_type, -acoustic_pc_type, -acoustic_sub_pc_type).
+
+   Convergence needs damping: an undamped network driven inside its band
+   is indefinite and COCG stalls or breaks down.  A solve that does not
+   converge within max_iterations returns status InaccurateSolution and
+   its residual, never NaN (free DOFs are zero if not finite).
+
+   Deterministic: the same input on the same ranks gives the same bits
+   (fixed summation order in the products and in MPI's reductions).
+   Without PETSc (ACOUSTIC_HAVE_PETSC undefined) available() is false and
+   the constructor throws SolverError.
+------------------------------------------------------------------------- */
+
+#ifndef ACOUSTIC_KRYLOV_SOLVER_H
+#define ACOUSTIC_KRYLOV_SOLVER_H
+
+#include "acoustic_contact_network.h"
+#include "acoustic_halo_exchange.h"
+#include "acoustic_helmholtz_solver.h"
+
+#include <mpi.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace Acoustic {
+
+enum class KrylovPreconditioner { None, Shifted };
+
+// "none" or "shifted"; throws SolverError listing the allowed names otherwise
+KrylovPreconditioner krylov_preconditioner_from_name(const std::string &name);
+std::string krylov_preconditioner_name(KrylovPreconditioner preconditioner);
+
+struct KrylovSettings {
+  std::string method = "bcgs";    // PETSc KSP type
+  double tolerance = 1e-9;        // relative residual ||b - A x|| / ||b||
+  int max_iterations = 5000;
+  KrylovPreconditioner preconditioner = KrylovPreconditioner::Shifted;
+  double shift = 0.5;    // beta of the shifted operator K + i omega C - (1 - i beta) omega^2 M
+};
+
+// one rank's part of the problem
+struct DistributedHelmholtzProblem {
+  const ContactNetwork *network = nullptr;    // local grains and this rank's contacts
+  int num_owned = 0;                          // grains 0 .. num_owned - 1 are owned here
+  double omega = 0.0;
+  std::vector<int> prescribed_dofs;           // local DOFs, any local grain
+  Eigen::VectorXcd prescribed_values;         // their amplitudes
+};
+
+class KrylovHelmholtzSolver {
+ public:
+  // true when built with PETSc
+  static bool available();
+
+  // collective over comm
+  KrylovHelmholtzSolver(MPI_Comm comm, const KrylovSettings &settings);
+  ~KrylovHelmholtzSolver();
+  KrylovHelmholtzSolver(const KrylovHelmholtzSolver &) = delete;
+  KrylovHelmholtzSolver &operator=(const KrylovHelmholtzSolver &) = delete;
+
+  // Collective.  Returns q on every local DOF (ghosts from their owners,
+  // prescribed DOFs their values), the iterations and the true relative
+  // residual.  initial_guess: nullptr (start from 0) or one value per local
+  // DOF (the owned free ones are used); a guess that already satisfies the
+  // tolerance is returned as it is, after one product and no preconditioner
+  // (num_reuses() counts these).  Invalid input throws SolverError on the
+  // rank that found it and SolverErrorElsewhere on the others.
+  HelmholtzSolution solve(const DistributedHelmholtzProblem &problem, HaloExchange &halo,
+                          const Eigen::VectorXcd *initial_guess = nullptr);
+
+  const KrylovSettings &settings() const { return settings_; }
+  int last_iterations() const { return iterations_; }
+  // products of the operator with a vector in the last solve (one or two per
+  // iteration, depending on the method)
+  int last_products() const { return products_; }
+  // solves answered by the initial guess (no iteration), since construction
+  long num_reuses() const { return num_reuses_; }
+  // local operator, right-hand side and preconditioner (factorisation;
+  // analysis = 0), iterations and final residual (solve)
+  const SolverTimings &last_timings() const { return timings_; }
+
+ private:
+  MPI_Comm comm_;
+  KrylovSettings settings_;
+  int iterations_ = 0, products_ = 0;
+  long num_reuses_ = 0;
+  SolverTimings timings_;
+};
+
+}    // namespace Acoustic
+
+#endif
