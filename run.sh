@@ -25,6 +25,7 @@ debian_packages=(
   build-essential cmake dpkg-dev
   openmpi-bin libopenmpi-dev
   libeigen3-dev libsuitesparse-dev libmumps-dev libspectra-dev liblapack-dev libblas-dev libopenblas0-serial
+  libpetsc-complex-dev libmetis-dev
   libgtest-dev patch
   python3-numpy python3-scipy python3-matplotlib python3-pytest
 )

@@ -52,6 +52,10 @@
 
 namespace Acoustic {
 
+template <typename Scalar> class Factoriser;
+class SparsityPattern;
+struct MumpsSettings;
+
 // Iterative: KrylovHelmholtzSolver on the distributed network (acoustic_krylov_solver.h);
 // HelmholtzSolver takes the others
 enum class LinearSolverChoice { Auto, Ldlt, Lu, Mumps, Iterative };
@@ -89,9 +93,11 @@ struct SolverTimings {
 
 class HelmholtzSolver {
  public:
-  // collective over comm
+  // collective over comm; mumps: the ordering and low-rank settings of MUMPS
   explicit HelmholtzSolver(LinearSolverChoice choice = LinearSolverChoice::Auto,
                            double residual_tolerance = 1e-6, MPI_Comm comm = MPI_COMM_SELF);
+  HelmholtzSolver(LinearSolverChoice choice, double residual_tolerance, MPI_Comm comm,
+                  const MumpsSettings &mumps);
   ~HelmholtzSolver();
   HelmholtzSolver(const HelmholtzSolver &) = delete;
   HelmholtzSolver &operator=(const HelmholtzSolver &) = delete;
@@ -140,9 +146,12 @@ class HelmholtzSolver {
   long num_analyses() const { return num_analyses_; }
   long num_factorisations() const { return num_factorisations_; }
   const SolverTimings &last_timings() const { return timings_; }
+  // floating-point operations of the last numeric factorisation (MUMPS's
+  // RINFOG(3), on every rank of the team; 0 for the other factorisations)
+  double last_factorisation_flops() const;
 
  private:
-  struct Factorisations;    // CHOLMOD / UMFPACK objects, kept out of this header
+  struct Factorisations;    // the factorisers (MUMPS, UMFPACK, CHOLMOD), kept out of this header
 
   LinearSolverChoice choice_;
   double residual_tolerance_;
@@ -152,10 +161,15 @@ class HelmholtzSolver {
   bool reuse_ = false;
   int reuse_iterations_ = 10;
   double reuse_fraction_ = 0.01;
-  int reuse_backoff_ = 0;
-  int reuse_failures_ = 0;    // failed attempts since the last successful reuse
   SolverTimings timings_;
   std::unique_ptr<Factorisations> factors_;
+  struct ReusePolicy;    // what an earlier solve may answer
+  std::unique_ptr<ReusePolicy> policy_;
+
+  template <typename Scalar>
+  HelmholtzSolution solve_system(Factoriser<Scalar> &factoriser, SparsityPattern &pattern,
+                                 const Eigen::SparseMatrix<Scalar> &a, const Eigen::VectorXcd &rhs,
+                                 const std::vector<int> &free_dofs, int kind);
 };
 
 }    // namespace Acoustic

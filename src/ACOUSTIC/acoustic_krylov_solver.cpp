@@ -5,6 +5,8 @@
 
 #include "acoustic_krylov_solver.h"
 
+#include "acoustic_distributed_system.h"
+
 #include "acoustic_solver_error.h"
 
 #include <Eigen/SparseCore>
@@ -54,117 +56,6 @@ double seconds_since(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// every rank throws if any rank found the input invalid (a collective
-// solve must not leave ranks behind)
-void agree_on_validity(MPI_Comm comm, const std::string &local_problem)
-{
-  int bad = local_problem.empty() ? 0 : 1, any_bad = 0;
-  MPI_Allreduce(&bad, &any_bad, 1, MPI_INT, MPI_MAX, comm);
-  if (bad) throw SolverError(local_problem);
-  if (any_bad) throw SolverErrorElsewhere();
-}
-
-std::string check_problem(const DistributedHelmholtzProblem &p)
-{
-  if (!p.network) return "Krylov Helmholtz solve: no network";
-  const ContactNetwork &net = *p.network;
-  if (p.num_owned < 0 || p.num_owned > net.num_grains())
-    return "Krylov Helmholtz solve: num_owned is outside 0.." + std::to_string(net.num_grains());
-  if (!std::isfinite(p.omega) || p.omega < 0.0)
-    return "Krylov Helmholtz solve: the angular frequency must be >= 0 and finite";
-  if (p.prescribed_values.size() != static_cast<Eigen::Index>(p.prescribed_dofs.size()))
-    return "Krylov Helmholtz solve: give one prescribed value per prescribed DOF";
-  if (!p.prescribed_values.allFinite()) return "Krylov Helmholtz solve: a prescribed value is not finite";
-  std::vector<char> seen(net.num_dofs(), 0);
-  for (int dof : p.prescribed_dofs) {
-    if (dof < 0 || dof >= net.num_dofs())
-      return "Krylov Helmholtz solve: prescribed DOF " + std::to_string(dof) + " is outside the network";
-    if (seen[dof]) return "Krylov Helmholtz solve: DOF " + std::to_string(dof) + " is prescribed twice";
-    seen[dof] = 1;
-  }
-  return "";
-}
-
-// The local operator and the map between the solver's unknowns (the free
-// DOFs of the owned grains, in DOF order) and the local DOFs.
-class LocalOperator {
- public:
-  LocalOperator(const DistributedHelmholtzProblem &p, HaloExchange &halo) :
-      halo_(halo), ndof_(p.network->dofs_per_grain()), num_dofs_(p.network->num_dofs())
-  {
-    const ContactNetwork &net = *p.network;
-    const double omega = p.omega;
-    // K + i omega C on every local DOF, - omega^2 m on the owned ones: a
-    // ghost's mass is counted by its owner
-    Eigen::SparseMatrix<Complex> a = net.stiffness_matrix().cast<Complex>();
-    if (net.has_damping() && omega > 0.0) a += Complex(0.0, omega) * net.damping_matrix().cast<Complex>();
-    const Eigen::VectorXd mass = net.mass_diagonal();
-    Eigen::VectorXcd diagonal = Eigen::VectorXcd::Zero(num_dofs_);
-    owned_mass_ = Eigen::VectorXd::Zero(num_dofs_);
-    for (int k = 0; k < p.num_owned * ndof_; ++k) {
-      diagonal[k] = -omega * omega * mass[k];
-      owned_mass_[k] = mass[k];
-    }
-    a += Eigen::SparseMatrix<Complex>(diagonal.asDiagonal());
-    matrix_ = std::move(a);
-    matrix_.makeCompressed();
-
-    prescribed_.assign(num_dofs_, 0);
-    for (int dof : p.prescribed_dofs) prescribed_[dof] = 1;
-    for (int dof = 0; dof < p.num_owned * ndof_; ++dof)
-      if (!prescribed_[dof]) unknowns_.push_back(dof);
-    in_.resize(num_dofs_);
-    out_.resize(num_dofs_);
-  }
-
-  int num_unknowns() const { return static_cast<int>(unknowns_.size()); }
-  int num_dofs() const { return num_dofs_; }
-  const Eigen::VectorXd &owned_mass() const { return owned_mass_; }
-  const std::vector<int> &unknowns() const { return unknowns_; }
-  const std::vector<char> &prescribed() const { return prescribed_; }
-  const Eigen::SparseMatrix<Complex> &matrix() const { return matrix_; }
-  HaloExchange &halo() { return halo_; }
-  int dofs_per_grain() const { return ndof_; }
-
-  // y = A_FF x on the unknowns of this rank (collective)
-  void apply(const Complex *x, Complex *y)
-  {
-    in_.setZero();
-    for (std::size_t k = 0; k < unknowns_.size(); ++k) in_[unknowns_[k]] = x[k];
-    multiply_local(y);
-  }
-
-  // b = -A_FP q_P on the unknowns of this rank (collective); every prescribed
-  // DOF the rank holds has its value in `values` (local DOFs)
-  void right_hand_side(const Eigen::VectorXcd &values, Complex *b)
-  {
-    in_.setZero();
-    for (int dof = 0; dof < num_dofs_; ++dof)
-      if (prescribed_[dof]) in_[dof] = values[dof];
-    multiply_local(b);
-    for (std::size_t k = 0; k < unknowns_.size(); ++k) b[k] = -b[k];
-  }
-
- private:
-  // out = A in on the unknowns, in_ holding the owned values: ghosts from
-  // their owners, local products, ghost rows back to their owners
-  void multiply_local(Complex *result)
-  {
-    halo_.forward(in_.data(), ndof_);
-    out_.noalias() = matrix_ * in_;
-    halo_.reverse(out_.data(), ndof_);
-    for (std::size_t k = 0; k < unknowns_.size(); ++k) result[k] = out_[unknowns_[k]];
-  }
-
-  HaloExchange &halo_;
-  int ndof_, num_dofs_;
-  Eigen::SparseMatrix<Complex> matrix_;
-  Eigen::VectorXd owned_mass_;
-  std::vector<char> prescribed_;
-  std::vector<int> unknowns_;
-  Eigen::VectorXcd in_, out_;
-};
-
 }    // namespace
 
 #ifdef ACOUSTIC_HAVE_PETSC
@@ -199,7 +90,7 @@ void check(PetscErrorCode ierr, const char *what)
 }
 
 struct ShellContext {
-  LocalOperator *op = nullptr;
+  DistributedSystem *system = nullptr;
   double rhs_norm = 0.0;
   double tolerance = 0.0;
   int products = 0;    // of the operator with a vector
@@ -213,7 +104,7 @@ PetscErrorCode shell_multiply(Mat a, Vec x, Vec y)
   PetscScalar *out = nullptr;
   PetscCall(VecGetArrayRead(x, &in));
   PetscCall(VecGetArrayWrite(y, &out));
-  ctx->op->apply(reinterpret_cast<const Complex *>(in), reinterpret_cast<Complex *>(out));
+  ctx->system->apply(reinterpret_cast<const Complex *>(in), reinterpret_cast<Complex *>(out));
   ++ctx->products;
   PetscCall(VecRestoreArrayWrite(y, &out));
   PetscCall(VecRestoreArrayRead(x, &in));
@@ -234,57 +125,26 @@ PetscErrorCode converged_relative_to_rhs(KSP, PetscInt, PetscReal rnorm, KSPConv
 // The shifted operator P = A + i beta omega^2 M (= K + i omega C - (1 - i beta)
 // omega^2 M) assembled as a PETSc matrix over the unknowns of every rank:
 // each rank adds the entries of its local operator, rows of ghosts
-// included (PETSc sends them to their owners).
-Mat assemble_shifted_operator(LocalOperator &op, MPI_Comm comm, double omega, double beta)
+// included (PETSc sends them to their owners); blocks of the DOFs of a
+// grain (faster incomplete factors) when every grain has all its DOFs
+// unknown or none.
+Mat assemble_shifted_operator(DistributedSystem &system, double beta)
 {
-  const int n = op.num_unknowns();
-  int first = 0;
-  MPI_Exscan(&n, &first, 1, MPI_INT, MPI_SUM, comm);
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  if (rank == 0) first = 0;
-  // the global index of each local DOF (ghosts from their owners), -1 if prescribed
-  Eigen::VectorXcd index = Eigen::VectorXcd::Constant(op.num_dofs(), Complex(-1.0));
-  for (int k = 0; k < n; ++k) index[op.unknowns()[k]] = Complex(first + k);
-  op.halo().forward(index.data(), op.dofs_per_grain());
-  std::vector<PetscInt> global(op.num_dofs());
-  for (int k = 0; k < op.num_dofs(); ++k)
-    global[k] = op.prescribed()[k] ? -1 : static_cast<PetscInt>(std::lround(index[k].real()));
-
-  Eigen::SparseMatrix<Complex> shifted = op.matrix();
-  for (int k = 0; k < op.num_dofs(); ++k)
-    if (op.owned_mass()[k] > 0.0) shifted.coeffRef(k, k) += Complex(0.0, beta * omega * omega * op.owned_mass()[k]);
-
+  std::vector<long> rows, cols;
+  std::vector<Complex> values;
+  system.global_entries(beta, false, rows, cols, values);
+  const MPI_Comm comm = system.comm();
+  const PetscInt n = system.num_unknowns();
+  const PetscInt block = system.blocked() ? system.dofs_per_grain() : 1;
   auto insert = [&](Mat m) {
-    std::vector<PetscInt> rows;
-    std::vector<PetscScalar> values;
-    for (int col = 0; col < shifted.outerSize(); ++col) {
-      const PetscInt gcol = global[col];
-      if (gcol < 0) continue;
-      rows.clear();
-      values.clear();
-      for (Eigen::SparseMatrix<Complex>::InnerIterator it(shifted, col); it; ++it) {
-        if (global[it.row()] < 0) continue;
-        rows.push_back(global[it.row()]);
-        values.push_back(it.value());
-      }
-      check(MatSetValues(m, static_cast<PetscInt>(rows.size()), rows.data(), 1, &gcol, values.data(), ADD_VALUES),
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const PetscInt row = static_cast<PetscInt>(rows[k]), col = static_cast<PetscInt>(cols[k]);
+      check(MatSetValues(m, 1, &row, 1, &col, reinterpret_cast<const PetscScalar *>(&values[k]), ADD_VALUES),
             "MatSetValues");
     }
     check(MatAssemblyBegin(m, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
     check(MatAssemblyEnd(m, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
   };
-  // blocks of the DOFs of a grain (faster incomplete factors) when every
-  // grain has all its DOFs free or none
-  const int ndof = op.dofs_per_grain();
-  int blocked = 1;
-  for (std::size_t k = 0; k < op.unknowns().size(); k += ndof)
-    if (k + ndof - 1 >= op.unknowns().size() || op.unknowns()[k + ndof - 1] != op.unknowns()[k] + ndof - 1 ||
-        op.unknowns()[k] % ndof != 0)
-      blocked = 0;
-  MPI_Allreduce(MPI_IN_PLACE, &blocked, 1, MPI_INT, MPI_MIN, comm);
-  const PetscInt block = blocked ? ndof : 1;
-
   Mat preallocator = nullptr, p = nullptr;
   check(MatCreate(comm, &preallocator), "MatCreate");
   check(MatSetType(preallocator, MATPREALLOCATOR), "MatSetType");
@@ -293,7 +153,7 @@ Mat assemble_shifted_operator(LocalOperator &op, MPI_Comm comm, double omega, do
   check(MatSetUp(preallocator), "MatSetUp");
   insert(preallocator);
   check(MatCreate(comm, &p), "MatCreate");
-  check(MatSetType(p, blocked ? MATBAIJ : MATAIJ), "MatSetType");
+  check(MatSetType(p, block > 1 ? MATBAIJ : MATAIJ), "MatSetType");
   check(MatSetSizes(p, n, n, PETSC_DETERMINE, PETSC_DETERMINE), "MatSetSizes");
   check(MatSetBlockSize(p, block), "MatSetBlockSize");
   check(MatPreallocatorPreallocate(preallocator, PETSC_TRUE, p), "MatPreallocatorPreallocate");
@@ -339,22 +199,6 @@ KrylovHelmholtzSolver::~KrylovHelmholtzSolver() = default;
 
 namespace {
 
-// ||b - A x|| / ||b|| over every rank; infinite if x or the residual is not finite
-double relative_residual(LocalOperator &op, const std::vector<Complex> &x, const std::vector<Complex> &b,
-                         double b_norm, MPI_Comm comm)
-{
-  std::vector<Complex> ax(x.size());
-  op.apply(x.data(), ax.data());
-  double local[2] = {0.0, 0.0}, global[2];
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    local[0] += std::norm(b[k] - ax[k]);
-    if (!std::isfinite(x[k].real()) || !std::isfinite(x[k].imag())) local[1] = 1.0;
-  }
-  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm);
-  const double residual = std::sqrt(global[0]) / b_norm;
-  return (global[1] > 0.0 || !std::isfinite(residual)) ? std::numeric_limits<double>::infinity() : residual;
-}
-
 struct KspOutcome {
   std::string reason;    // PETSc's reason for stopping
   int iterations = 0, products = 0;
@@ -363,15 +207,17 @@ struct KspOutcome {
 
 // KSP on the shell operator, preconditioned with the shifted operator; x
 // holds the start and the result
-KspOutcome run_ksp(LocalOperator &op, const KrylovSettings &settings_, MPI_Comm comm_, double omega,
-                   const std::vector<Complex> &rhs, double rhs_norm, bool guessed, std::vector<Complex> &x)
+KspOutcome run_ksp(DistributedSystem &system, const KrylovSettings &settings_, bool guessed,
+                   std::vector<Complex> &x)
 {
   KspOutcome outcome;
   Clock::time_point start = Clock::now();
-  const int n = op.num_unknowns();
+  const MPI_Comm comm_ = system.comm();
+  const int n = system.num_unknowns();
+  const std::vector<Complex> &rhs = system.right_hand_side();
   ShellContext ctx;
-  ctx.op = &op;
-  ctx.rhs_norm = rhs_norm;
+  ctx.system = &system;
+  ctx.rhs_norm = system.rhs_norm();
   ctx.tolerance = settings_.tolerance;
   PetscObjects petsc;
   check(MatCreateShell(comm_, n, n, PETSC_DETERMINE, PETSC_DETERMINE, &ctx, &petsc.shell), "MatCreateShell");
@@ -397,7 +243,7 @@ KspOutcome run_ksp(LocalOperator &op, const KrylovSettings &settings_, MPI_Comm 
   if (shifted) {
     // the shifted operator, inverted approximately: incomplete LU on each
     // rank's unknowns and one layer of its neighbours' (additive Schwarz)
-    petsc.shifted = assemble_shifted_operator(op, comm_, omega, settings_.shift);
+    petsc.shifted = assemble_shifted_operator(system, settings_.shift);
     check(KSPSetOperators(petsc.ksp, petsc.shell, petsc.shifted), "KSPSetOperators");
     check(PCSetType(pc, PCASM), "PCSetType");
     check(PCASMSetOverlap(pc, 1), "PCASMSetOverlap");
@@ -445,66 +291,49 @@ HelmholtzSolution KrylovHelmholtzSolver::solve(const DistributedHelmholtzProblem
 {
   timings_ = SolverTimings();
   iterations_ = products_ = 0;
-  std::string problem_text = check_problem(problem);
-  if (problem_text.empty() && initial_guess && initial_guess->size() != problem.network->num_dofs())
-    problem_text = "Krylov Helmholtz solve: the initial guess needs one value per local DOF";
-  agree_on_validity(comm_, problem_text);
+  int bad_guess = (initial_guess && problem.network && initial_guess->size() != problem.network->num_dofs()) ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &bad_guess, 1, MPI_INT, MPI_MAX, comm_);
+  if (bad_guess) throw SolverError("Krylov Helmholtz solve: the initial guess needs one value per local DOF");
 
   const Clock::time_point start = Clock::now();
-  const ContactNetwork &net = *problem.network;
-  LocalOperator op(problem, halo);
-  Eigen::VectorXcd values = Eigen::VectorXcd::Zero(net.num_dofs());
-  for (std::size_t k = 0; k < problem.prescribed_dofs.size(); ++k)
-    values[problem.prescribed_dofs[k]] = problem.prescribed_values[k];
-  const int n = op.num_unknowns();
-  std::vector<Complex> rhs(n);
-  op.right_hand_side(values, rhs.data());
-  double local[2] = {0.0, static_cast<double>(n)}, global[2];
-  for (const Complex &v : rhs) local[0] += std::norm(v);
-  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, comm_);
-  const double rhs_norm = std::sqrt(global[0]);
-  if (!std::isfinite(rhs_norm)) throw SolverError("Krylov Helmholtz solve: the right-hand side is not finite");
+  DistributedSystem system(problem, halo, comm_);
   timings_.factorisation = seconds_since(start);
+  const int n = system.num_unknowns();
 
   HelmholtzSolution result;
   result.factorisation = settings_.method + " (" + krylov_preconditioner_name(settings_.preconditioner) + ")";
   std::vector<Complex> x(n, Complex(0.0));
   double residual = 0.0;
-  if (global[1] > 0.0 && rhs_norm > 0.0) {
+  if (system.num_global_unknowns() > 0 && system.rhs_norm() > 0.0) {
     if (initial_guess)
-      for (int k = 0; k < n; ++k) x[k] = (*initial_guess)[op.unknowns()[k]];
+      for (int k = 0; k < n; ++k) x[k] = (*initial_guess)[system.unknowns()[k]];
     // a guess that already solves the system: no preconditioner, no iteration
-    residual = initial_guess ? relative_residual(op, x, rhs, rhs_norm, comm_) : 1.0;
+    residual = initial_guess ? system.relative_residual(x) : 1.0;
     if (residual <= settings_.tolerance) {
       ++num_reuses_;
       result.factorisation += " (earlier solution)";
     } else {
-      const KspOutcome ksp = run_ksp(op, settings_, comm_, problem.omega, rhs, rhs_norm, initial_guess != nullptr, x);
+      const KspOutcome ksp = run_ksp(system, settings_, initial_guess != nullptr, x);
       iterations_ = ksp.iterations;
       products_ = ksp.products;
       timings_.factorisation += ksp.setup_seconds;
       timings_.solve += ksp.solve_seconds;
-      const std::string &reason = ksp.reason;
       const Clock::time_point check_start = Clock::now();
-      residual = relative_residual(op, x, rhs, rhs_norm, comm_);
+      residual = system.relative_residual(x);
       timings_.solve += seconds_since(check_start);
       if (!std::isfinite(residual)) {
         for (Complex &v : x) v = 0.0;
         result.status = SolveStatus::InaccurateSolution;
-        result.message = "the iterate is not finite (" + reason + ")";
+        result.message = "the iterate is not finite (" + ksp.reason + ")";
         residual = 1.0;
       } else if (residual > settings_.tolerance) {
         result.status = SolveStatus::InaccurateSolution;
         result.message = "no convergence to the relative residual " + number(settings_.tolerance) + " in " +
-            std::to_string(iterations_) + " iterations (" + reason + ")";
+            std::to_string(iterations_) + " iterations (" + ksp.reason + ")";
       }
     }
   }
-
-  // q on every local DOF: the owned unknowns, the prescribed values, the ghosts from their owners
-  result.q = values;
-  for (int k = 0; k < n; ++k) result.q[op.unknowns()[k]] = x[k];
-  halo.forward(result.q.data(), op.dofs_per_grain());
+  result.q = system.local_solution(x);
   result.relative_residual = residual;
   result.iterations = iterations_;
   return result;

@@ -2,19 +2,8 @@
    ACOUSTIC package numerics: the damped Helmholtz problem solved by a
    Krylov method where the network lies, in a domain decomposition.
 
-   Each rank holds its part of the network (see acoustic_halo_exchange.h):
-   a ContactNetwork whose grains are the ones it owns (the first
-   num_owned), then ghosts, then prescribed nodes, and whose contacts are
-   those it counts (every contact of the whole network on exactly one
-   rank).  The operator
-     A = K + i omega C - omega^2 M
-   is applied without assembling it anywhere: each rank multiplies by its
-   local K and C (assembled by ContactNetwork, the same code as for the
-   gathered network) and by the masses of the grains it owns; ghost values
-   come in by a forward halo exchange, ghost products go back to their
-   owners by a reverse one.  The unknowns are the free DOFs of the owned
-   grains; b = -(A_FP q_P) on them, from the prescribed values of every
-   prescribed DOF the rank holds (owned, ghost or node).
+   The system, its operator applied where the contacts are and its
+   unknowns, is a DistributedSystem (acoustic_distributed_system.h).
 
    The Krylov method is PETSc's (KSP on a shell matrix, on the ranks'
    communicator): BiCGStab by default.  (COCG, the natural method for a
@@ -32,7 +21,7 @@
    preconditioner (-acoustic_ksp_type, -acoustic_pc_type, -acoustic_sub_pc_type).
 
    Convergence needs damping: an undamped network driven inside its band
-   is indefinite and COCG stalls or breaks down.  A solve that does not
+   is indefinite and BiCGStab stalls or breaks down.  A solve that does not
    converge within max_iterations returns status InaccurateSolution and
    its residual, never NaN (free DOFs are zero if not finite).
 
@@ -45,7 +34,7 @@
 #ifndef ACOUSTIC_KRYLOV_SOLVER_H
 #define ACOUSTIC_KRYLOV_SOLVER_H
 
-#include "acoustic_contact_network.h"
+#include "acoustic_distributed_system.h"
 #include "acoustic_halo_exchange.h"
 #include "acoustic_helmholtz_solver.h"
 
@@ -70,15 +59,6 @@ struct KrylovSettings {
   int max_iterations = 5000;
   KrylovPreconditioner preconditioner = KrylovPreconditioner::Shifted;
   double shift = 0.5;    // beta of the shifted operator K + i omega C - (1 - i beta) omega^2 M
-};
-
-// one rank's part of the problem
-struct DistributedHelmholtzProblem {
-  const ContactNetwork *network = nullptr;    // local grains and this rank's contacts
-  int num_owned = 0;                          // grains 0 .. num_owned - 1 are owned here
-  double omega = 0.0;
-  std::vector<int> prescribed_dofs;           // local DOFs, any local grain
-  Eigen::VectorXcd prescribed_values;         // their amplitudes
 };
 
 class KrylovHelmholtzSolver {

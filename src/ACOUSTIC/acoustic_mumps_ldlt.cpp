@@ -5,8 +5,14 @@
 
 #include "acoustic_mumps_ldlt.h"
 
+#include "acoustic_solver_error.h"
+
 #include <dmumps_c.h>
 #include <zmumps_c.h>
+
+#ifdef ACOUSTIC_HAVE_METIS
+#include <metis.h>
+#endif
 
 #include <cstdint>
 #include <limits>
@@ -32,10 +38,14 @@ template <> struct MumpsApi<std::complex<double>> {
   static void call(Struct *s) { zmumps_c(s); }
 };
 
-// ICNTL(k) and INFOG(k) with MUMPS's 1-based numbering
+// ICNTL(k), CNTL(k) and INFOG(k) with MUMPS's 1-based numbering
 template <typename Struct> MUMPS_INT &icntl(Struct &s, int k)
 {
   return s.icntl[k - 1];
+}
+template <typename Struct> auto &cntl(Struct &s, int k)
+{
+  return s.cntl[k - 1];
 }
 template <typename Struct> MUMPS_INT infog(const Struct &s, int k)
 {
@@ -68,7 +78,68 @@ std::string mumps_error(int code, int detail)
       " (" + what + ")";
 }
 
+// The pivot order of a symmetric matrix (lower triangle given as 1-based
+// rows and columns, diagonal included) by METIS's nested dissection:
+// position (1-based) of each variable, as MUMPS's PERM_IN wants it.
+std::vector<int> nested_dissection_order(int n, const std::vector<int> &rows, const std::vector<int> &cols)
+{
+#ifdef ACOUSTIC_HAVE_METIS
+  // the adjacency of the graph (both directions, no self loops), in CSR
+  std::vector<idx_t> degree(n + 1, 0);
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    if (rows[k] != cols[k]) {
+      ++degree[rows[k]];
+      ++degree[cols[k]];
+    }
+  std::vector<idx_t> xadj(n + 1, 0);
+  for (int v = 0; v < n; ++v) xadj[v + 1] = xadj[v] + degree[v + 1];
+  std::vector<idx_t> fill(xadj.begin(), xadj.end() - 1), adjncy(xadj[n]);
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    if (rows[k] != cols[k]) {
+      adjncy[fill[rows[k] - 1]++] = cols[k] - 1;
+      adjncy[fill[cols[k] - 1]++] = rows[k] - 1;
+    }
+  idx_t nvertices = n;
+  std::vector<idx_t> perm(n), iperm(n);
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_NUMBERING] = 0;
+  const int status =
+      METIS_NodeND(&nvertices, xadj.data(), adjncy.data(), nullptr, options, perm.data(), iperm.data());
+  if (status != METIS_OK) throw SolverError("METIS_NodeND failed (status " + std::to_string(status) + ")");
+  std::vector<int> position(n);
+  for (int v = 0; v < n; ++v) position[v] = static_cast<int>(iperm[v]) + 1;
+  return position;
+#else
+  (void) n;
+  (void) rows;
+  (void) cols;
+  throw SolverError("the METIS ordering needs an ACOUSTIC package built with METIS");
+#endif
+}
+
 }    // namespace
+
+MumpsOrdering mumps_ordering_from_name(const std::string &name)
+{
+  if (name == "auto") return MumpsOrdering::Auto;
+  if (name == "metis") return MumpsOrdering::Metis;
+  throw SolverError("unknown ordering '" + name + "': allowed are auto, metis");
+}
+
+std::string mumps_ordering_name(MumpsOrdering ordering)
+{
+  return ordering == MumpsOrdering::Metis ? "metis" : "auto";
+}
+
+bool metis_available()
+{
+#ifdef ACOUSTIC_HAVE_METIS
+  return true;
+#else
+  return false;
+#endif
+}
 
 /* ---------------------------------------------------------------------- */
 
@@ -187,8 +258,16 @@ template <typename Scalar> MumpsInstanceOf<Scalar> &instance_of(const std::uniqu
 
 }    // namespace
 
-template <typename Scalar> MumpsLdlt<Scalar>::MumpsLdlt(MumpsTeam &team) : instance_(new MumpsInstanceOf<Scalar>(team))
+template <typename Scalar>
+MumpsLdlt<Scalar>::MumpsLdlt(MumpsTeam &team, const MumpsSettings &settings) :
+    settings_(settings), instance_(new MumpsInstanceOf<Scalar>(team))
 {
+  if (settings.ordering == MumpsOrdering::Metis && !metis_available())
+    throw SolverError("MUMPS ordering metis: this build of the ACOUSTIC package has no METIS "
+                      "(Debian: libmetis-dev); use ordering auto");
+  if (settings.low_rank && !(settings.low_rank_tolerance > 0.0 && settings.low_rank_tolerance < 1.0))
+    throw SolverError("MUMPS block low-rank tolerance must be in (0, 1), got " +
+                      std::to_string(settings.low_rank_tolerance));
 }
 
 template <typename Scalar> MumpsLdlt<Scalar>::~MumpsLdlt() = default;
@@ -218,6 +297,16 @@ template <typename Scalar> void MumpsLdlt<Scalar>::analyzePattern(const MatrixTy
   m.data.irn = rows_.data();
   m.data.jcn = cols_.data();
   m.data.a = reinterpret_cast<typename MumpsApi<Scalar>::Entry *>(values_.data());
+  if (settings_.ordering == MumpsOrdering::Metis) {
+    pivot_order_ = nested_dissection_order(static_cast<int>(a.rows()), rows_, cols_);
+    m.data.perm_in = pivot_order_.data();
+    icntl(m.data, 7) = 1;    // the pivot order given in PERM_IN
+  } else {
+    icntl(m.data, 7) = 7;
+  }
+  // block low-rank factors (set before the analysis), compressed to CNTL(7)
+  icntl(m.data, 35) = settings_.low_rank ? 2 : 0;
+  cntl(m.data, 7) = settings_.low_rank ? settings_.low_rank_tolerance : 0.0;
   m.run(JOB_ANALYSE);
   info_ = Eigen::Success;
   message_.clear();
@@ -283,6 +372,94 @@ template <typename Scalar> void MumpsLdlt<Scalar>::solve_in_place(Dense &x) cons
   if (infog(m.data, 1) < 0) x.setConstant(Scalar(std::numeric_limits<double>::quiet_NaN()));
 }
 
+/* ----------------------------------------------------------------------
+   distributed assembled input: every rank calls MUMPS itself
+------------------------------------------------------------------------- */
+
+template <typename Scalar>
+void MumpsLdlt<Scalar>::analyze_distributed(long n, const std::vector<long> &rows, const std::vector<long> &cols,
+                                            const std::vector<Scalar> &values)
+{
+  MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
+  if (!m.initialised) m.call(JOB_INIT);
+  rows_.resize(rows.size());
+  cols_.resize(cols.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    rows_[k] = static_cast<int>(rows[k]) + 1;
+    cols_[k] = static_cast<int>(cols[k]) + 1;
+  }
+  values_ = values;
+  m.data.n = static_cast<MUMPS_INT>(n);
+  icntl(m.data, 18) = 3;    // each rank its entries, for the analysis and the factorisation
+  icntl(m.data, 20) = 0;    // dense right-hand side, on the host
+  icntl(m.data, 21) = 0;    // solution on the host
+  icntl(m.data, 7) = 7;     // MUMPS's own ordering
+  icntl(m.data, 35) = settings_.low_rank ? 2 : 0;
+  cntl(m.data, 7) = settings_.low_rank ? settings_.low_rank_tolerance : 0.0;
+  m.data.nnz_loc = static_cast<MUMPS_INT8>(rows_.size());
+  m.data.nz_loc = static_cast<MUMPS_INT>(rows_.size());
+  m.data.irn_loc = rows_.data();
+  m.data.jcn_loc = cols_.data();
+  m.data.a_loc = reinterpret_cast<typename MumpsApi<Scalar>::Entry *>(values_.data());
+  m.call(JOB_ANALYSE);
+  info_ = Eigen::Success;
+  message_.clear();
+  if (infog(m.data, 1) < 0) {
+    info_ = Eigen::InvalidInput;
+    message_ = mumps_error(infog(m.data, 1), infog(m.data, 2));
+  }
+}
+
+template <typename Scalar> void MumpsLdlt<Scalar>::factorize_distributed(const std::vector<Scalar> &values)
+{
+  MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
+  if (!m.initialised || values.size() != values_.size()) {
+    info_ = Eigen::InvalidInput;
+    message_ = "MumpsLdlt: factorize_distributed() needs the entries given to analyze_distributed()";
+    return;
+  }
+  values_ = values;
+  m.data.a_loc = reinterpret_cast<typename MumpsApi<Scalar>::Entry *>(values_.data());
+  for (int attempt = 0;; ++attempt) {
+    m.call(JOB_FACTORISE);
+    const int code = infog(m.data, 1);
+    if ((code == -8 || code == -9 || code == -14 || code == -15) && attempt < 6) {
+      icntl(m.data, 14) = 2 * icntl(m.data, 14) + 20;
+      continue;
+    }
+    break;
+  }
+  info_ = Eigen::Success;
+  message_.clear();
+  const int code = infog(m.data, 1);
+  if (code < 0) {
+    info_ = (code == -10) ? Eigen::NumericalIssue : Eigen::InvalidInput;
+    message_ = mumps_error(code, infog(m.data, 2));
+  }
+}
+
+template <typename Scalar> void MumpsLdlt<Scalar>::solve_distributed(Dense &x) const
+{
+  MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
+  const bool host = m.team().host();
+  int usable = (info_ == Eigen::Success && m.initialised && (!host || x.rows() == m.data.n)) ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &usable, 1, MPI_INT, MPI_MIN, m.team().comm());
+  if (!usable) {
+    if (host) x.setConstant(Scalar(std::numeric_limits<double>::quiet_NaN()));
+    return;
+  }
+  int columns = host ? static_cast<int>(x.cols()) : 0;
+  MPI_Bcast(&columns, 1, MPI_INT, 0, m.team().comm());
+  if (columns == 0) return;
+  if (host) {
+    m.data.rhs = reinterpret_cast<typename MumpsApi<Scalar>::Entry *>(x.data());
+    m.data.lrhs = static_cast<MUMPS_INT>(x.rows());
+  }
+  m.data.nrhs = static_cast<MUMPS_INT>(columns);
+  m.call(JOB_SOLVE);
+  if (host && infog(m.data, 1) < 0) x.setConstant(Scalar(std::numeric_limits<double>::quiet_NaN()));
+}
+
 template <typename Scalar> long MumpsLdlt<Scalar>::factor_entries() const
 {
   const MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
@@ -294,6 +471,14 @@ template <typename Scalar> double MumpsLdlt<Scalar>::local_factorisation_flops()
 {
   const MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
   return m.initialised ? static_cast<double>(m.data.rinfo[2]) : 0.0;    // RINFO(3)
+}
+
+template <typename Scalar> double MumpsLdlt<Scalar>::factorisation_flops() const
+{
+  const MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
+  if (!m.initialised) return 0.0;
+  // RINFOG(14): the operations done with low-rank blocks; RINFOG(3): full rank
+  return settings_.low_rank ? static_cast<double>(m.data.rinfog[13]) : static_cast<double>(m.data.rinfog[2]);
 }
 
 template class MumpsLdlt<double>;

@@ -20,6 +20,14 @@
    A team's instances are created lazily by the host's first analysis and
    destroyed (collectively) by the destructors, which every rank of the
    team must call in the same order.
+
+   MumpsSettings: the fill-reducing ordering (auto: MUMPS's own choice,
+   ICNTL(7) = 7, which takes PORD's nested dissection on contact networks;
+   metis: METIS_NodeND on the graph of the matrix, given to MUMPS as its
+   pivot order, ICNTL(7) = 1, when the package is built with METIS), and
+   the block low-rank factorisation (ICNTL(35) = 2: BLR factors, used in
+   the solve too; CNTL(7): the dropping tolerance of the low-rank
+   compression, relative to the norm of the matrix).
 ------------------------------------------------------------------------- */
 
 #ifndef ACOUSTIC_MUMPS_LDLT_H
@@ -38,6 +46,19 @@
 namespace Acoustic {
 
 class MumpsInstance;
+
+enum class MumpsOrdering { Auto, Metis };
+// "auto" or "metis"; throws SolverError listing the allowed names otherwise
+MumpsOrdering mumps_ordering_from_name(const std::string &name);
+std::string mumps_ordering_name(MumpsOrdering ordering);
+// true when the package is built with METIS
+bool metis_available();
+
+struct MumpsSettings {
+  MumpsOrdering ordering = MumpsOrdering::Auto;
+  bool low_rank = false;                // block low-rank factorisation
+  double low_rank_tolerance = 1e-10;    // CNTL(7)
+};
 
 // The ranks that factorise together, and the channel on which the host
 // sends them the jobs of its instances.
@@ -60,6 +81,19 @@ class MumpsTeam {
 
  private:
   friend class MumpsInstance;
+
+enum class MumpsOrdering { Auto, Metis };
+// "auto" or "metis"; throws SolverError listing the allowed names otherwise
+MumpsOrdering mumps_ordering_from_name(const std::string &name);
+std::string mumps_ordering_name(MumpsOrdering ordering);
+// true when the package is built with METIS
+bool metis_available();
+
+struct MumpsSettings {
+  MumpsOrdering ordering = MumpsOrdering::Auto;
+  bool low_rank = false;                // block low-rank factorisation
+  double low_rank_tolerance = 1e-10;    // CNTL(7)
+};
   int attach(MumpsInstance *instance);    // its number in the orders
   void detach(int number);
   void order(int number, int job);        // host: workers run `job` of instance `number`
@@ -74,7 +108,8 @@ template <typename Scalar> class MumpsLdlt {
   typedef Eigen::SparseMatrix<Scalar> MatrixType;
   typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Dense;
 
-  explicit MumpsLdlt(MumpsTeam &team);
+  // throws SolverError for settings this build cannot honour (metis without METIS)
+  explicit MumpsLdlt(MumpsTeam &team, const MumpsSettings &settings = MumpsSettings());
   ~MumpsLdlt();
   MumpsLdlt(const MumpsLdlt &) = delete;
   MumpsLdlt &operator=(const MumpsLdlt &) = delete;
@@ -103,18 +138,36 @@ template <typename Scalar> class MumpsLdlt {
   }
   void solve_in_place(Dense &x) const;
 
+  // Distributed assembled input (ICNTL(18) = 3), called by every rank of the
+  // team together (no host orders): each rank gives its own entries of the
+  // lower triangle (0-based global rows and columns; entries given twice are
+  // summed) of an n x n matrix; the ordering is MUMPS's own (the graph is
+  // nowhere whole to order it with METIS).  The right-hand side and the
+  // solution are dense on the host (centralised): solve_distributed's x is
+  // read and written on the host only.  info() and message() as above, on
+  // every rank.
+  void analyze_distributed(long n, const std::vector<long> &rows, const std::vector<long> &cols,
+                           const std::vector<Scalar> &values);
+  void factorize_distributed(const std::vector<Scalar> &values);
+  void solve_distributed(Dense &x) const;
+
   // size of the last factors (entries of L)
   long factor_entries() const;
   // floating-point operations of the last factorisation done on this rank
   // (any rank of the team: shows how the work was shared)
   double local_factorisation_flops() const;
+  // floating-point operations of the last factorisation on all ranks (host),
+  // as done: with the low-rank blocks when low_rank is on
+  double factorisation_flops() const;
 
  private:
+  MumpsSettings settings_;
   std::unique_ptr<MumpsInstance> instance_;
   Eigen::ComputationInfo info_ = Eigen::Success;
   std::string message_;
   std::vector<int> rows_, cols_;    // lower triangle, 1-based
   std::vector<Scalar> values_;
+  std::vector<int> pivot_order_;    // ordering metis: position of each variable, 1-based
 };
 
 extern template class MumpsLdlt<double>;

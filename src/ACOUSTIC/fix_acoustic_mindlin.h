@@ -22,9 +22,11 @@ FixStyle(acoustic/mindlin,FixAcousticMindlin);
 
 #include "fix.h"
 
+#include "acoustic_distributed_mumps.h"
 #include "acoustic_helmholtz_solver.h"
 #include "acoustic_krylov_solver.h"
 #include "acoustic_mindlin_law.h"
+#include "acoustic_mumps_ldlt.h"
 #include "vibration_network.h"
 
 #include <cstdint>
@@ -97,10 +99,14 @@ class FixAcousticMindlin : public Fix {
   Acoustic::LinearSolverChoice solver_choice;
   bool reuse;    // solve by the last solution or earlier factors when they still fit
   Acoustic::KrylovSettings krylov_settings;
+  Acoustic::MumpsSettings mumps_settings;
+  bool ordering_given;    // false: METIS in 3D (when built with it), MUMPS's own in 2D
 
   std::unique_ptr<VibrationNetwork> network;
-  std::unique_ptr<Acoustic::HelmholtzSolver> solver;           // direct solvers, on rank 0
-  std::unique_ptr<Acoustic::KrylovHelmholtzSolver> krylov;     // solver iterative, every rank
+  std::unique_ptr<Acoustic::HelmholtzSolver> solver;           // auto, lu, ldlt: on rank 0
+  std::unique_ptr<Acoustic::KrylovHelmholtzSolver> krylov;     // iterative: every rank
+  std::unique_ptr<Acoustic::DistributedMumpsSolver> mumps;     // mumps: every rank
+  bool distributed() const { return krylov || mumps; }
   int ndof;      // DOFs per grain of the network
   int damped;
 

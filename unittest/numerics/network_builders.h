@@ -70,6 +70,46 @@ inline Acoustic::ContactNetwork disordered_network(int nx, int ny, unsigned seed
   return network;
 }
 
+// Disordered 3D network: a simple cubic lattice of n x n x nz grains with
+// bonds to the 6 neighbours and to 4 of the 12 face diagonals, directions
+// tilted at random, random masses, stiffnesses and radii; dashpots for the
+// damping ratio zeta.  The bottom layer (z = 0) is the source.
+struct TestNetwork {
+  Acoustic::ContactNetwork network;
+  std::vector<int> source_grains;
+};
+
+inline TestNetwork disordered_3d(int n, int nz, Acoustic::ContactModel model, double zeta, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  auto index = [&](int x, int y, int z) { return (z * n + y) * n + x; };
+  std::vector<Acoustic::Grain> grains;
+  for (int g = 0; g < n * n * nz; ++g) grains.push_back(Acoustic::Grain{0.6 + 0.8 * uniform(rng), 0.4 + 0.2 * uniform(rng)});
+  std::vector<Acoustic::Contact> contacts;
+  const int steps[5][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}};
+  for (int z = 0; z < nz; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        for (const auto &s : steps) {
+          const int x2 = x + s[0], y2 = y + s[1], z2 = z + s[2];
+          if (x2 >= n || y2 >= n || z2 >= nz) continue;
+          if ((s[0] + s[1] + s[2]) > 1 && uniform(rng) < 0.5) continue;
+          Eigen::Vector3d normal(-s[0] + 0.2 * (uniform(rng) - 0.5), -s[1] + 0.2 * (uniform(rng) - 0.5),
+                                 -s[2] + 0.2 * (uniform(rng) - 0.5));
+          normal.normalize();
+          const int i = index(x2, y2, z2), j = index(x, y, z);
+          const double kn = 0.3 + 1.4 * uniform(rng), kt = 0.3 * kn;
+          const double meff = grains[i].mass * grains[j].mass / (grains[i].mass + grains[j].mass);
+          contacts.push_back(Acoustic::Contact{i, j, normal, kn, kt, 2.0 * zeta * std::sqrt(kn * meff),
+                                     2.0 * zeta * std::sqrt(kt * meff)});
+        }
+  TestNetwork t{Acoustic::ContactNetwork(3, model, grains, contacts), {}};
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) t.source_grains.push_back(index(x, y, 0));
+  return t;
+}
+
 }    // namespace AcousticTest
 
 #endif

@@ -97,6 +97,8 @@ BAD_INPUTS = [
     ("fix_unknown_preconditioner", FIX + " solver iterative preconditioner ilu",
      "unknown preconditioner 'ilu': allowed are none, shifted"),
     ("fix_negative_shift", FIX + " solver iterative shift -0.5", "shift must be >= 0, got -0.5"),
+    ("fix_unknown_ordering", FIX + " ordering scotch", "ordering must be 'mumps' or 'metis', got 'scotch'"),
+    ("fix_low_rank_one", FIX + " low_rank 1", "low_rank tolerance must be in [0, 1) (0: full rank), got 1"),
     # fix acoustic/mindlin: the system
     ("fix_empty_source", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source empty\nrun 0",
      "source group empty has no atom in the fix group all"),
