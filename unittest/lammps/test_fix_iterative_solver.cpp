@@ -1,8 +1,9 @@
-// Integration tests of solver iterative of fix acoustic/mindlin (the Krylov
-// solve in LAMMPS's domain decomposition): the same friction factors as the
-// direct solvers on damped 2D and 3D layers, on 1 and 2 ranks; the same bits
-// twice; the warning and the kept factors of an undamped network driven
-// inside its band; the outputs; reuse of the last solution.
+// Integration tests of the solvers of fix acoustic/mindlin that work in
+// LAMMPS's domain decomposition: solver iterative (the Krylov solve) gives
+// the friction factors of the direct solvers on damped 2D and 3D layers, on
+// 1 and 2 ranks, the same bits twice, the warning and the kept factors of an
+// undamped network driven inside its band, reuse of the last solution;
+// solver mumps (distributed input) gives those of the gathered network.
 #include "lammps_fixture.h"
 
 #include "compute.h"
@@ -191,6 +192,25 @@ const Case kCases[] = {
 
 INSTANTIATE_TEST_SUITE_P(Layers, IterativeMatchesDirect, ::testing::ValuesIn(kCases),
                          [](const ::testing::TestParamInfo<Case> &info) { return std::string(info.param.name); });
+
+TEST(DistributedMumps, MatchesTheGatheredFactorisation)
+{
+  // solver mumps (each rank its own entries, MUMPS on every rank) against
+  // solver auto (the network gathered and factorised on rank 0), undamped
+  // and damped, 2D and 3D
+  for (const char *deck : {kLayer2D, kLayer3D}) {
+    for (const std::string damping : {"", " damping 0.05"}) {
+      SCOPED_TRACE(std::string(deck == kLayer2D ? "2D" : "3D") + damping);
+      const std::string fix = "fix ac all acoustic/mindlin 100 frequency 2.0 amplitude 2e-3 source base model full" + damping;
+      const Solved gathered = solve(deck, fix + " solver auto");
+      const Solved distributed = solve(deck, fix + " solver mumps");
+      int reduced = 0;
+      EXPECT_LE(largest_difference(gathered.factors, distributed.factors, reduced), 1e-9);
+      EXPECT_GT(reduced, 10);
+      EXPECT_LE(distributed.residual, 1e-10);
+    }
+  }
+}
 
 TEST(IterativeSolver, OneAndTwoRanksGiveTheSameFactors)
 {
