@@ -72,8 +72,9 @@ run_case() {
   shift 3
   export ACOUSTIC_BENCH_MEMORY=$work/mem.$name
   rm -f "$ACOUSTIC_BENCH_MEMORY"
-  mpirun -np "$np" --oversubscribe -x ACOUSTIC_BENCH_MEMORY "$work/rank.sh" "$lmp" -in "$here/$deck" \
-    "$@" -log "$work/log.$name" -screen none -nocite
+  # in the work directory: the decks take file names without a path
+  (cd "$work" && mpirun -np "$np" --oversubscribe -x ACOUSTIC_BENCH_MEMORY "$work/rank.sh" "$lmp" \
+    -in "$here/$deck" "$@" -log "$work/log.$name" -screen none -nocite)
   local mb
   mb=$(awk '$2 > m {m = $2} END {printf "%.0f", m / 1024}' "$ACOUSTIC_BENCH_MEMORY")
   awk -v name="$name" -v np="$np" -v mb="$mb" '
@@ -160,7 +161,7 @@ for set in "${sets[@]}"; do
         name=${variant%%|*} extra=${variant#*|}
         solver=${name%%_*}
         run_case "direct_$name" 2 in.layer3d_random -var data "$data" -var damping 0.05 -var solver "$solver" \
-          -var frequency "$frequency" -var steps 0 -var extra "$extra" -var factors "$work/factors.$name"
+          -var frequency "$frequency" -var steps 0 -var extra "$extra" -var factors "factors.$name" -var dump_factors 1
         [ "$name" = auto ] || /usr/bin/python3 "$here/../factors_diff.py" "$work/factors.auto" "$work/factors.$name" |
           sed 's/^/    /'
       done ;;

@@ -13,7 +13,8 @@
      P = K + i omega C - (1 - i shift) omega^2 M,
    assembled as a PETSc matrix over the ranks and inverted approximately by
    incomplete LU on each rank's unknowns plus one layer of its neighbours'
-   (additive Schwarz, PCASM with overlap 1 and ILU(1)); "none": none.
+   (additive Schwarz, PCASM with overlap 1 and ILU(1) in reverse
+   Cuthill-McKee order); "none": none.
    Convergence: ||b - A x|| <= tolerance ||b||, checked at every iteration
    on the recursively updated residual and once more on the true residual
    at the end.  PETSc options with the prefix "acoustic_" (e.g. in the

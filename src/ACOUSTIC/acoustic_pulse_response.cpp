@@ -11,11 +11,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace Acoustic {
 
 namespace {
+
+// a number in messages: %g
+std::string number(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", value);
+  return text;
+}
 
 // the automatic step of method integrate: STEP_FRACTION / w_bound (error of the
 // chain's coherent peak below 1e-3 of it over 40 periods of its lowest mode)
@@ -201,7 +210,15 @@ PulseResponse by_integration(const PulseProblem &p, const PulseOptions &o, const
                       " (w_bound >= the highest angular frequency): the integration could be "
                       "unstable; give a smaller timestep or leave it automatic");
   const double target = (o.time_step > 0.0) ? o.time_step : STEP_FRACTION / omega_max;
-  const long per_sample = std::max(1L, static_cast<long>(std::ceil(interval / target - 1e-9)));
+  // the number of steps, counted in doubles first: it may exceed any integer
+  const double per_sample_steps = std::max(1.0, std::ceil(interval / target - 1e-9));
+  const double needed = per_sample_steps * (o.samples - 1);
+  if (!std::isfinite(needed) || needed > static_cast<double>(o.max_steps))
+    throw SolverError("pulse response: method integrate would take " + number(needed) + " steps of " +
+                      number(target) + " (the duration " + number(o.duration) + " in steps below the " +
+                      "stability limit), more than max_steps = " + std::to_string(o.max_steps) +
+                      "; shorten the duration, give a larger timestep, or raise max_steps");
+  const long per_sample = static_cast<long>(per_sample_steps);
   const double dt = interval / per_sample;
 
   auto acceleration = [&](const Eigen::VectorXd &u, const Eigen::VectorXd &v) {
@@ -220,7 +237,9 @@ PulseResponse by_integration(const PulseProblem &p, const PulseOptions &o, const
   Eigen::VectorXd u = start.displacement, v = start.velocity;
   Eigen::VectorXd acc = acceleration(u, v);
   const long total = per_sample * (o.samples - 1);
+  const long report_every = (o.progress && total > 1000000) ? total / 10 : 0;
   for (long step = 0;; ++step) {
+    if (report_every > 0 && step > 0 && step % report_every == 0) o.progress(step, total);
     if (step % per_sample == 0) {
       const int k = static_cast<int>(step / per_sample);
       result.times[k] = k * interval;
@@ -271,13 +290,19 @@ PulseResponse pulse_response(const PulseProblem &problem, const PulseOptions &op
   if (coupling.cwiseAbs().maxCoeff() == 0.0)
     throw SolverError("pulse response: the detector touches no free grain (no contact couples it "
                       "to the network): its signal would be zero");
+  PulseResponse response;
   if (options.method == PulseMethod::Modes) {
     if (problem.damping.size() != 0 && has_damping(problem.damping))
       throw SolverError("pulse response: method modes needs an undamped network; use method "
                         "integrate with damping");
-    return by_modes(problem, options, free, start, coupling);
+    response = by_modes(problem, options, free, start, coupling);
+  } else {
+    response = by_integration(problem, options, free, start, coupling);
   }
-  return by_integration(problem, options, free, start, coupling);
+  if (!response.signal.allFinite() || !response.times.allFinite())
+    throw SolverError("pulse response: the signal is not finite (an overflow: check the duration, the "
+                      "time step and the stiffnesses)");
+  return response;
 }
 
 }    // namespace Acoustic

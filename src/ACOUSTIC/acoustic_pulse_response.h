@@ -36,6 +36,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,10 @@ struct PulseOptions {
   int samples = 500;              // >= 2 samples at t = k T / (samples - 1)
   double time_step = 0.0;         // integrate: 0 = automatic
   double snapshot_time = -1.0;    // >= 0: also the displacement at this time
+  long max_steps = 100000000;     // integrate: more steps than this is an error
+  // integrate, when it takes more than a million steps: called about every
+  // tenth of them with the steps done and the total (a progress report)
+  std::function<void(long, long)> progress;
 };
 
 struct PulseResponse {
@@ -81,7 +86,8 @@ struct PulseResponse {
 
 // Throws SolverError on invalid input (sizes, a source that touches no free
 // DOF, method modes with damping, more than 20 000 free DOFs for modes, a
-// time step of method integrate that is not below the stability bound).
+// time step of method integrate that is not below the stability bound, more
+// integration steps than max_steps) and when the signal is not finite.
 PulseResponse pulse_response(const PulseProblem &problem, const PulseOptions &options);
 
 }    // namespace Acoustic

@@ -158,6 +158,9 @@ ComputeVibrationModes::ComputeVibrationModes(LAMMPS *lmp, int narg, char **arg) 
 
   ndof = Acoustic::dofs_per_grain(domain->dimension, settings.model);
   network.reset(new VibrationNetwork(lmp, settings, CMD));
+  // between runs the compute must know whether the system is still that of
+  // the last run
+  network->add_state_fix(id, group->names[igroup]);
 
   // outputs
   scalar_flag = 1;
@@ -192,6 +195,7 @@ ComputeVibrationModes::ComputeVibrationModes(LAMMPS *lmp, int narg, char **arg) 
 
 ComputeVibrationModes::~ComputeVibrationModes()
 {
+  if (network) network->delete_state_fix();
   memory->destroy(histogram);
   memory->destroy(mode_rows);
   memory->destroy(shape_values);
@@ -296,6 +300,9 @@ std::string ComputeVibrationModes::solve_on_rank0(bool with_shapes)
   } catch (Acoustic::SolverError &e) {
     return e.what();
   } catch (std::bad_alloc &) {
+    if (method == Acoustic::ModeMethod::Kpm)
+      return fmt::format("out of memory in the kernel polynomial method ({} moments, {} vectors); "
+                         "use fewer moments or vectors", kpm.moments, kpm.random_vectors);
     return "out of memory in the eigensolver; use method lanczos or kpm for large networks";
   }
   return std::string();
@@ -308,6 +315,7 @@ std::string ComputeVibrationModes::solve_on_rank0(bool with_shapes)
 
 void ComputeVibrationModes::solve(bool need_shapes)
 {
+  network->require_current_state(fmt::format("{} {}", CMD, id));
   if (solved_step == update->ntimestep && (solved_with_shapes || !need_shapes)) return;
   const bool with_shapes = need_shapes || selected_mode > 0;
 

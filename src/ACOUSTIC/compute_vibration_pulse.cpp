@@ -120,6 +120,13 @@ ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int narg, char **arg) 
         error->all(FLERR, "Illegal {} command: timestep must be > 0, got {}", CMD,
                    options.time_step);
       iarg += 2;
+    } else if (key == "max_steps") {
+      need(1);
+      const double steps = number(1, "max_steps");
+      if (!(steps >= 1.0 && steps <= 9e18))
+        error->all(FLERR, "Illegal {} command: max_steps must be in [1, 9e18], got {}", CMD, arg[iarg + 1]);
+      options.max_steps = static_cast<long>(steps);
+      iarg += 2;
     } else if (key == "snapshot") {
       need(1);
       options.snapshot_time = number(1, "snapshot time");
@@ -135,7 +142,7 @@ ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int narg, char **arg) 
       iarg += 2;
     } else {
       error->all(FLERR, "Illegal {} command: unknown keyword {}; keywords are direction, initial, "
-                        "method, duration, samples, timestep, snapshot, fixed, stiffness, "
+                        "method, duration, samples, timestep, max_steps, snapshot, fixed, stiffness, "
                         "kappa_scale, ratio, model, damping", CMD, key);
     }
   }
@@ -159,6 +166,9 @@ ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int narg, char **arg) 
 
   ndof = Acoustic::dofs_per_grain(dim, settings.model);
   network.reset(new VibrationNetwork(lmp, settings, CMD));
+  // between runs the compute must know whether the system is still that of
+  // the last run
+  network->add_state_fix(id, group->names[igroup]);
 
   // outputs
   array_flag = 1;
@@ -184,6 +194,7 @@ ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int narg, char **arg) 
 
 ComputeVibrationPulse::~ComputeVibrationPulse()
 {
+  if (network) network->delete_state_fix();
   memory->destroy(signal);
   memory->destroy(snapshot_values);
   memory->destroy(snapshot_atom);
@@ -328,6 +339,10 @@ std::string ComputeVibrationPulse::solve_on_rank0()
           ? Acoustic::PulseMethod::Integrate
           : Acoustic::PulseMethod::Modes;
     }
+    // a long integration reports its progress (rank 0 alone runs it)
+    o.progress = [this](long done, long total) {
+      utils::logmesg(lmp, "{} {}: {} of {} integration steps done\n", CMD, id, done, total);
+    };
     const Acoustic::PulseResponse r = Acoustic::pulse_response(p, o);
     for (int k = 0; k < options.samples; k++) {
       signal[k][0] = r.times[k];
@@ -351,6 +366,7 @@ std::string ComputeVibrationPulse::solve_on_rank0()
 
 void ComputeVibrationPulse::solve()
 {
+  network->require_current_state(fmt::format("{} {}", CMD, id));
   if (solved_step == update->ntimestep) return;
   network->build(groupbit, {source.groupbit, detector.groupbit, fixed_groupbit});
   std::string failure;

@@ -29,6 +29,7 @@
 #include "acoustic_solver_error.h"
 #include "collective_error.h"
 #include "granular_contact_walker.h"
+#include "granular_state.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -54,15 +55,6 @@ static constexpr double RESTART_WITH_SIGNATURE = -2.0;
 static constexpr double RESTART_WITH_ITERATIONS = -3.0;
 static constexpr int NVECTOR_BEFORE_ITERATIONS = 14;
 
-// FNV-1a: a 64-bit hash of a sequence of 64-bit words
-static constexpr std::uint64_t FNV_OFFSET = 1469598103934665603ULL;
-static void fnv1a_mix(std::uint64_t &hash, std::uint64_t value)
-{
-  for (int byte = 0; byte < 8; byte++) {
-    hash ^= (value >> (8 * byte)) & 0xff;
-    hash *= 1099511628211ULL;
-  }
-}
 
 /* ---------------------------------------------------------------------- */
 
@@ -70,9 +62,10 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), source_groupbit(0), source_wall(-1), direction_axis(-1), direction_given(false), source_mode(ALL),
     solver_choice(Acoustic::LinearSolverChoice::Auto), reuse(false), ordering_given(false), ndof(0), damped(0),
     last_update(-1),
-    atoms_at_end(0), settings_signature(FNV_OFFSET), restart_settings_differ(false), q_atom(nullptr),
+    factors_committed(true), atoms_at_end(0), settings_signature(0), restart_settings_differ(false), q_atom(nullptr),
     q_restored(false), amplitude_atom(nullptr), contact_array(nullptr), ncontact_rows(0), maxcontact_rows(0),
-    last_solution_valid(false), comm_mode(COMM_AMPLITUDES), halo_width(0)
+    last_solution_valid(false), warned_idle_source(false), solved_network(0), unchanged_networks(0),
+    comm_mode(COMM_AMPLITUDES), halo_width(0)
 {
   if (narg < 10)
     error->all(FLERR, "Illegal {} command: expected fix ID group-ID acoustic/mindlin N "
@@ -80,10 +73,12 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
 
   // the words after the fix ID, as given: a restart file written with other
   // ones holds factors of another drive
+  Fingerprint signature;
   for (int k = 1; k < narg; k++) {
-    for (const char *c = arg[k]; *c; c++) fnv1a_mix(settings_signature, static_cast<unsigned char>(*c));
-    fnv1a_mix(settings_signature, 0);
+    for (const char *c = arg[k]; *c; c++) signature.mix(static_cast<std::uint64_t>(static_cast<unsigned char>(*c)));
+    signature.mix(static_cast<std::uint64_t>(0));
   }
+  settings_signature = signature.value();
 
   nevery = utils::inumeric(FLERR, arg[3], false, lmp);
   if (nevery <= 0) error->all(FLERR, "Illegal {} command: N must be > 0, got {}", CMD, nevery);
@@ -206,10 +201,9 @@ FixAcousticMindlin::~FixAcousticMindlin()
 {
   // update and force are gone when LAMMPS itself is deleted (clear, end of input)
   if (update && force && update->whichflag == 0 && last_update >= 0) {
-    int same_atoms = (atoms_fingerprint() == atoms_at_end) ? 1 : 0, same_all = 0;
-    MPI_Allreduce(&same_atoms, &same_all, 1, MPI_INT, MPI_MIN, world);
+    const bool same_atoms = same_on_every_rank(lmp, atom_order_fingerprint(lmp), atoms_at_end);
     GranularContactWalker walker(lmp, CMD);
-    if (!same_all || !walker.reset_factors_between_runs(groupbit))
+    if (!same_atoms || !walker.reset_factors_between_runs(groupbit))
       error->warning(FLERR, "{} {}: the friction factors it set stay in the contact histories: "
                             "atoms moved between processors since the last run. Use 'run 0' "
                             "before 'unfix {}' to restore full friction", CMD, id, id);
@@ -462,7 +456,9 @@ void FixAcousticMindlin::setup_pre_force(int /*vflag*/)
   q_restored = false;
   const bool other_settings = restart_settings_differ;
   restart_settings_differ = false;
-  if (!factors_are_current() || other_settings) {
+  // an update whose factors never reached the end of a run (an error in a
+  // setup after it) may have left them in neighbor lists that are gone
+  if (!factors_are_current() || other_settings || !factors_committed) {
     update_factors();
     return;
   }
@@ -484,7 +480,10 @@ void FixAcousticMindlin::pre_force(int /*vflag*/)
 
 void FixAcousticMindlin::post_run()
 {
-  atoms_at_end = atoms_fingerprint();
+  atoms_at_end = atom_order_fingerprint(lmp);
+  // the factors are in the contact histories that pair granular's history
+  // fix keeps with the atoms after a run
+  factors_committed = true;
 }
 
 /* ----------------------------------------------------------------------
@@ -543,13 +542,13 @@ bool FixAcousticMindlin::report_solve(const Acoustic::HelmholtzSolution &sol,
   if (solver) {
     stats[NANALYSES] = counts_before[0] + static_cast<double>(solver->num_analyses());
     stats[NFACTORISATIONS] = counts_before[1] + static_cast<double>(solver->num_factorisations());
-    stats[NREUSES] = counts_before[2] + static_cast<double>(solver->num_reuses());
+    stats[NREUSES] = counts_before[2] + static_cast<double>(solver->num_reuses() + unchanged_networks);
   } else if (mumps) {
     stats[NANALYSES] = counts_before[0] + static_cast<double>(mumps->num_analyses());
     stats[NFACTORISATIONS] = counts_before[1] + static_cast<double>(mumps->num_factorisations());
-    stats[NREUSES] = counts_before[2] + static_cast<double>(mumps->num_reuses());
+    stats[NREUSES] = counts_before[2] + static_cast<double>(mumps->num_reuses() + unchanged_networks);
   } else {
-    stats[NREUSES] = counts_before[2] + static_cast<double>(krylov->num_reuses());
+    stats[NREUSES] = counts_before[2] + static_cast<double>(krylov->num_reuses() + unchanged_networks);
   }
   if (sol.ok()) return true;
   if (comm->me != 0) return false;
@@ -707,12 +706,33 @@ bool FixAcousticMindlin::solve_distributed()
 void FixAcousticMindlin::update_factors()
 {
   const double t0 = MPI_Wtime();
+  if (reuse && frequency > 0.0 && last_solution_valid && network_unchanged()) {
+    // the network of the last solve, bit for bit: its solution, which the
+    // atoms carry, is this one; only the factors go to the histories again
+    // (a contact that opened and closed since has a new history)
+    stats[NCONTACTS] = static_cast<double>(network->ncontacts_total());
+    stats[TIME_GATHER] = MPI_Wtime() - t0;
+    stats[TIME_ASSEMBLY] = stats[TIME_FACTORISATION] = stats[TIME_SOLVE] = 0.0;
+    stats[NITERATIONS] = 0.0;
+    stats[NREUSES] += 1.0;
+    unchanged_networks++;
+    factors_committed = false;
+    const double t1 = MPI_Wtime();
+    comm->forward_comm(this);
+    evaluate_contacts(true);
+    factor_statistics(network->local_contacts());
+    const double t2 = MPI_Wtime();
+    stats[TIME_UPDATE] = t2 - t1;
+    stats[TIME_TOTAL] += t2 - t0;
+    last_update = update->ntimestep;
+    return;
+  }
   if (distributed()) network->build_local(groupbit, {source_groupbit});
   else network->build(groupbit, {source_groupbit});
   stats[NCONTACTS] = static_cast<double>(network->ncontacts_total());
   stats[TIME_GATHER] = MPI_Wtime() - t0;
   stats[TIME_ASSEMBLY] = stats[TIME_FACTORISATION] = stats[TIME_SOLVE] = stats[TIME_UPDATE] = 0.0;
-  last_update = update->ntimestep;
+  factors_committed = false;
 
   int solved = 1;
   if (frequency > 0.0 && distributed()) {
@@ -733,10 +753,15 @@ void FixAcousticMindlin::update_factors()
     evaluate_contacts(true);
   }
   last_solution_valid = solved != 0 || last_solution_valid;
+  // the network this solution belongs to (reuse: an unchanged network needs no solve)
+  if (reuse) solved_network = solved ? network_fingerprint() : 0;
   factor_statistics(network->local_contacts());
+  warn_idle_source_wall();
   const double t2 = MPI_Wtime();
   stats[TIME_UPDATE] = t2 - t1;
   stats[TIME_TOTAL] += t2 - t0;
+  // only now: an update stopped by an ERROR is not current
+  last_update = update->ntimestep;
 }
 
 /* ----------------------------------------------------------------------
@@ -843,6 +868,61 @@ void FixAcousticMindlin::evaluate_contacts(bool set_factors)
 }
 
 /* ----------------------------------------------------------------------
+   everything the solution depends on, on this processor: the contacts of
+   the network (atom IDs, normal, stiffnesses) and the grains of the group
+   (ID, mass, radius, source or not)
+------------------------------------------------------------------------- */
+
+std::uint64_t FixAcousticMindlin::network_fingerprint() const
+{
+  Fingerprint f;
+  const tagint *tag = atom->tag;
+  for (const auto &c : network->local_contacts()) {
+    if (!c.owned || !(c.kn > 0.0)) continue;
+    f.mix(static_cast<std::uint64_t>(tag[c.i]));
+    f.mix(static_cast<std::uint64_t>(c.wall >= 0 ? -1 - c.wall : tag[c.j]));
+    for (double n : c.n) f.mix(n);
+    f.mix(c.kn);
+    f.mix(c.kt);
+  }
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    f.mix(static_cast<std::uint64_t>(tag[i]));
+    f.mix(atom->rmass[i]);
+    f.mix(atom->radius[i]);
+    f.mix(static_cast<std::uint64_t>((atom->mask[i] & source_groupbit) ? 1 : 0));
+  }
+  return f.value();
+}
+
+// collective: walk the contacts and compare with the network of the last solve
+bool FixAcousticMindlin::network_unchanged()
+{
+  network->collect(groupbit);
+  return solved_network != 0 && same_on_every_rank(lmp, network_fingerprint(), solved_network);
+}
+
+/* ----------------------------------------------------------------------
+   a source wall that touches no grain of the group drives nothing: say so
+   (once per fix)
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::warn_idle_source_wall()
+{
+  if (source_wall < 0 || frequency == 0.0 || warned_idle_source) return;
+  bigint touching = 0, all = 0;
+  for (const auto &c : network->local_contacts())
+    if (c.owned && c.wall == source_wall && c.kn > 0.0) touching++;
+  MPI_Allreduce(&touching, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all > 0) return;
+  warned_idle_source = true;
+  if (comm->me == 0)
+    error->warning(FLERR, "{} {}: the source wall {} touches no grain of group {}: nothing vibrates "
+                          "and every friction factor stays 1; bring the grains onto the wall or "
+                          "check its position", CMD, id, source_wall_fix, group->names[igroup]);
+}
+
+/* ----------------------------------------------------------------------
    statistics of the factors in the contact histories (each contact once)
 ------------------------------------------------------------------------- */
 
@@ -864,20 +944,6 @@ void FixAcousticMindlin::factor_statistics(const std::vector<GranularContact> &c
   stats[MEAN_FACTOR] = (global[2] > 0.0) ? global[0] / global[2] : 1.0;
   stats[MIN_FACTOR] = global_min;
   stats[WEAK_FRACTION] = (global[2] > 0.0) ? global[1] / global[2] : 0.0;
-}
-
-/* ----------------------------------------------------------------------
-   the owned and ghost atoms of this processor, in order
-------------------------------------------------------------------------- */
-
-std::uint64_t FixAcousticMindlin::atoms_fingerprint() const
-{
-  std::uint64_t hash = FNV_OFFSET;
-  fnv1a_mix(hash, static_cast<std::uint64_t>(atom->nlocal));
-  fnv1a_mix(hash, static_cast<std::uint64_t>(atom->nghost));
-  for (int i = 0; i < atom->nlocal + atom->nghost; i++)
-    fnv1a_mix(hash, static_cast<std::uint64_t>(atom->tag[i]));
-  return hash;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -923,6 +989,7 @@ void FixAcousticMindlin::restart(char *buf)
     restart_settings_differ = (written != settings_signature);
   }
   last_update = static_cast<bigint>(list[0]);
+  factors_committed = true;    // the file's contact histories hold them
   for (int k = 0; k < NVECTOR; k++) stats[k] = (k < nstats) ? list[k + 1] : 0.0;
   // the solver of this process counts from 0: its counts add to those of the writer
   counts_before[0] = stats[NANALYSES];

@@ -111,6 +111,7 @@ class FixAcousticMindlin : public Fix {
   int damped;
 
   bigint last_update;           // step of the last update of the factors, -1: none yet
+  bool factors_committed;       // the factors of the last update reached the end of a run
   std::uint64_t atoms_at_end;   // fingerprint of the atoms at the end of the last run
   std::uint64_t settings_signature;   // hash of the words of the fix command after its ID
   bool restart_settings_differ;       // the restart file read was written with other settings
@@ -118,6 +119,9 @@ class FixAcousticMindlin : public Fix {
   double **q_atom;            // complex DOF amplitudes per atom, (re, im) pairs
   bool q_restored;            // q_atom of this process's atoms came from a restart file
   bool last_solution_valid;   // q_atom holds the solution of an update (a start for reuse yes)
+  bool warned_idle_source;    // the WARNING of a source wall without contacts was printed
+  std::uint64_t solved_network;    // fingerprint of the network of the last solve (reuse yes), 0: none
+  long unchanged_networks;         // updates that found that network unchanged (no solve)
   double **amplitude_atom;    // per-atom output: translational amplitudes
   double **contact_array;     // local output: one row per contact
   int ncontact_rows, maxcontact_rows;
@@ -152,7 +156,9 @@ class FixAcousticMindlin : public Fix {
   void set_amplitudes();
   void evaluate_contacts(bool set_factors);
   void factor_statistics(const std::vector<GranularContact> &contacts);
-  std::uint64_t atoms_fingerprint() const;
+  void warn_idle_source_wall();
+  std::uint64_t network_fingerprint() const;
+  bool network_unchanged();
 };
 
 }    // namespace LAMMPS_NS

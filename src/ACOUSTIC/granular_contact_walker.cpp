@@ -146,7 +146,6 @@ void GranularContactWalker::init()
 void GranularContactWalker::locate_walls()
 {
   planes.clear();
-  plane_fixes.clear();
   for (auto *fix : modify->get_fix_list()) {
     if (utils::strmatch(fix->style, "^wall/gran/region")) {
       error->warning(FLERR, "{}: the contacts with fix {} (wall/gran/region) are not in the "
@@ -175,14 +174,8 @@ void GranularContactWalker::locate_walls()
     check_model(model, fmt::format("the contacts with fix {}", fix->id), false);
     const double lo = *static_cast<double *>(fix->extract("lo", dim));
     const double hi = *static_cast<double *>(fix->extract("hi", dim));
-    if (lo > -ABSENT_PLANE) {
-      planes.push_back({fix->id, 0, *wallstyle, lo});
-      plane_fixes.push_back({fix, model});
-    }
-    if (hi < ABSENT_PLANE) {
-      planes.push_back({fix->id, 1, *wallstyle, hi});
-      plane_fixes.push_back({fix, model});
-    }
+    if (lo > -ABSENT_PLANE) planes.push_back({fix->id, 0, *wallstyle, lo});
+    if (hi < ABSENT_PLANE) planes.push_back({fix->id, 1, *wallstyle, hi});
   }
 }
 
@@ -239,7 +232,12 @@ void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int 
                                     CollectiveError &errors)
 {
   contacts.clear();
-  if (!pair) init();
+  // pair granular as it is now (it may have been defined again since init())
+  auto *current = dynamic_cast<PairGranular *>(force->pair_match("granular", 1));
+  if (!pair || current != pair) init();
+  if (!pair->list || !history || !history->firstflag)
+    error->all(FLERR, "{}: pair granular has no neighbor list yet (a new pair style since the "
+                      "last run); use 'run 0' first", command);
   collect_pair(contacts, groupbit, errors);
   collect_walls(contacts, groupbit, errors);
 }
@@ -370,8 +368,13 @@ void GranularContactWalker::collect_walls(std::vector<GranularContact> &contacts
   tagint *tag = atom->tag;
   for (std::size_t p = 0; p < planes.size(); p++) {
     const WallPlane &plane = planes[p];
-    Fix *fix = plane_fixes[p].fix;
-    GranularModel *model = plane_fixes[p].model;
+    auto *fix = dynamic_cast<FixWallGran *>(modify->get_fix_by_id(plane.fix_id));
+    if (!fix) {
+      errors.report(fmt::format("{}: fix {} (wall/gran) was deleted since the last run; use 'run 0' "
+                                "first", command, plane.fix_id));
+      continue;
+    }
+    GranularModel *model = fix->model;
     int dim = 0;
     auto **history_one = static_cast<double **>(fix->extract("history", dim));
     const double lo = *static_cast<double *>(fix->extract("lo", dim));

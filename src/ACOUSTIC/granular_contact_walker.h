@@ -105,13 +105,9 @@ class GranularContactWalker : protected Pointers {
   class PairGranular *pair;
   class FixNeighHistory *history;
 
-  // a plane and the fix it belongs to
-  struct WallSource {
-    class Fix *fix;
-    Granular_NS::GranularModel *model;
-  };
+  // the planes; their fixes are looked up by ID when used (a fix may be
+  // deleted between runs)
   std::vector<WallPlane> planes;
-  std::vector<WallSource> plane_fixes;
 
   void check_model(Granular_NS::GranularModel *model, const std::string &where,
                    bool needs_factor);

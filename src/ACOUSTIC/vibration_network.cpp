@@ -25,6 +25,9 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_acoustic_state.h"
+#include "modify.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,8 +87,11 @@ int VibrationNetworkSettings::parse(int iarg, int narg, char **arg, const std::s
   if (key == "kappa_scale") {
     need(1);
     kappa_scale = finite_number(arg[iarg + 1], command, "kappa_scale", lmp);
-    if (kappa_scale <= 0.0)
-      error->all(FLERR, "Illegal {} command: kappa_scale must be > 0, got {}", command, kappa_scale);
+    // a factor on the Hertz constant of a real material: far outside
+    // 1e-100 .. 1e100 the stiffnesses leave the range of doubles
+    if (!(kappa_scale >= 1e-100 && kappa_scale <= 1e100))
+      error->all(FLERR, "Illegal {} command: kappa_scale must be in [1e-100, 1e100] (a factor on "
+                        "the Hertz constant), got {}", command, kappa_scale);
     return 2;
   }
   if (key == "ratio") {
@@ -131,6 +137,28 @@ VibrationNetwork::~VibrationNetwork() = default;
 void VibrationNetwork::init()
 {
   walker.init();
+}
+
+void VibrationNetwork::add_state_fix(const std::string &owner_id, const std::string &group_name)
+{
+  state_fix_id = owner_id + "_ACOUSTIC_STATE";
+  modify->add_fix(fmt::format("{} {} ACOUSTIC/STATE {}", state_fix_id, group_name, owner_id));
+}
+
+void VibrationNetwork::delete_state_fix()
+{
+  // at the end of LAMMPS the fixes may be gone already
+  if (!state_fix_id.empty() && modify && modify->get_fix_by_id(state_fix_id)) modify->delete_fix(state_fix_id);
+}
+
+void VibrationNetwork::require_current_state(const std::string &owner) const
+{
+  if (update->whichflag != 0 || state_fix_id.empty()) return;
+  const auto *state = dynamic_cast<FixAcousticState *>(modify->get_fix_by_id(state_fix_id));
+  if (!state || !state->current())
+    error->all(FLERR, "{}: the system changed since the last run (atoms moved, created or deleted, "
+                      "the box, the pair or wall coefficients, the walls): its contacts are those of "
+                      "the next run's setup; evaluate it after 'run 0'", owner);
 }
 
 int VibrationNetwork::dofs_per_grain() const

@@ -75,6 +75,17 @@ class VibrationNetwork : protected Pointers {
   // check the pair style and the atom style; call from init()
   void init();
 
+  // For the computes, which may be evaluated between runs: an internal fix
+  // (ACOUSTIC/STATE) records the state of the system at every run;
+  // require_current_state() stops every rank with an ERROR when, between
+  // runs, the system is not that of the last run any more (atoms moved,
+  // deleted or created, box, pair or wall coefficients or styles changed, a
+  // wall removed): the neighbor lists and contact models no longer describe
+  // it.  During a run it does nothing.  `owner` names the style in the ERROR.
+  void add_state_fix(const std::string &owner_id, const std::string &group_name);
+  void delete_state_fix();
+  void require_current_state(const std::string &owner) const;
+
   // collective: walk the contacts of the group, gather them to rank 0 and
   // build the network there; marker k of marker_groupbits selects the grains
   // whose indices marked_grains(k) lists on rank 0 (the source, the
@@ -125,6 +136,7 @@ class VibrationNetwork : protected Pointers {
   VibrationNetworkSettings settings;
   std::string command;
   GranularContactWalker walker;
+  std::string state_fix_id;    // looked up by ID when used: a fix may be deleted
 
   std::vector<GranularContact> contacts;
   bigint ncontacts_all, ngrains_all;

@@ -984,7 +984,7 @@ const BadFix kBadFixes[] = {
      "keyword stiffness needs 3 value(s)"},
     {"bad_kappa_scale",
      "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base kappa_scale 0",
-     "kappa_scale must be > 0"},
+     "kappa_scale must be in [1e-100, 1e100]"},
     {"negative_ratio", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base ratio -1",
      "ratio k_t/k_n must be >= 0"},
     {"negative_cmu", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source base cmu -1",

@@ -77,7 +77,8 @@ BAD_INPUTS = [
     ("fix_stiffness_hertz_bad_nu", FIX + " stiffness hertz 1e9 0.7", "needs -1 < nu < 0.5"),
     ("fix_stiffness_hertz_infinite_E", FIX + " stiffness hertz 1e400 0.3",
      "Floating point number 1e400 in input script or data file is out of range"),
-    ("fix_kappa_scale_zero", FIX + " kappa_scale 0", "kappa_scale must be > 0"),
+    ("fix_kappa_scale_zero", FIX + " kappa_scale 0", "kappa_scale must be in [1e-100, 1e100]"),
+    ("fix_kappa_scale_huge", FIX + " kappa_scale 1e300", "kappa_scale must be in [1e-100, 1e100] (a factor on the Hertz constant), got 1e+300"),
     ("fix_kappa_scale_infinite", FIX + " kappa_scale 1e400", "Floating point number 1e400 in input script or data file is out of range"),
     ("fix_negative_ratio", FIX + " ratio -1", "ratio k_t/k_n must be >= 0"),
     ("fix_infinite_ratio", FIX + " ratio 1e400", "Floating point number 1e400 in input script or data file is out of range"),
@@ -184,6 +185,35 @@ BAD_INPUTS = [
      "duration 20\nthermo_style custom step c_p[3]\nrun 0", "the detector touches no free grain"),
     ("pulse_unstable_timestep", PULSE + " method integrate timestep 100\nthermo_style custom step c_p[3]\nrun 0",
      "the integration could be unstable"),
+    # lifecycle between runs: a compute evaluated after the system changed (issue: stale state)
+    ("modes_after_displace_atoms", COMPUTE + "\nthermo_style custom step c_m\nrun 0\n"
+     "displace_atoms grains move 0.01 0 0 units box\nprint \"$(c_m[1])\"",
+     "the system changed since the last run"),
+    ("modes_after_delete_atoms", COMPUTE + "\nthermo_style custom step c_m\nrun 0\n"
+     "group gone id 30\ndelete_atoms group gone\nprint \"$(c_m[1])\"",
+     "the system changed since the last run"),
+    ("modes_after_pair_coeff", COMPUTE + "\nthermo_style custom step c_m\nrun 0\n"
+     "pair_coeff * * hooke 1e6 0 tangential linear_history/acoustic 8e5 0 0.5\nprint \"$(c_m[1])\"",
+     "the system changed since the last run"),
+    ("modes_after_unfix_wall", FLOOR + COMPUTE + "\nthermo_style custom step c_m\nrun 0\n"
+     "unfix floor\nprint \"$(c_m[1])\"", "the system changed since the last run"),
+    ("pulse_after_unfix_wall", FLOOR + PULSE + "\nthermo_style custom step c_p[3]\nrun 0\nunfix floor\n"
+     "print \"$(c_p[3])\"", "the system changed since the last run"),
+    ("pulse_after_set_diameter", PULSE + "\nthermo_style custom step c_p[3]\nrun 0\n"
+     "set group grains diameter 1.01\nprint \"$(c_p[3])\"", "the system changed since the last run"),
+    ("modes_after_change_box", COMPUTE + "\nthermo_style custom step c_m\nrun 0\n"
+     "change_box all x final 0 10.5 units box\nprint \"$(c_m[1])\"", "the system changed since the last run"),
+    ("modes_after_pair_style", COMPUTE + "\nthermo_style custom step c_m\nrun 0\npair_style granular\n"
+     "pair_coeff * * hooke 1e4 0 tangential linear_history/acoustic 8e3 0 0.5\nprint \"$(c_m[1])\"",
+     "the system changed since the last run"),
+    # unbounded work in the pulse integration
+    ("pulse_tiny_timestep", PULSE + " method integrate timestep 1e-12\nthermo_style custom step c_p[3]\nrun 0",
+     "method integrate would take 2e+13 steps"),
+    ("pulse_underflowing_timestep", PULSE + " method integrate timestep 1e-300\nthermo_style custom step c_p[3]\n"
+     "run 0", "more than max_steps = 100000000"),
+    ("pulse_huge_duration", TOP + "compute p all vibration/pulse source base detector top duration 1e300 "
+     "method integrate\nthermo_style custom step c_p[3]\nrun 0", "more than max_steps"),
+    ("pulse_bad_max_steps", PULSE + " max_steps 0", "max_steps must be in [1, 9e18], got 0"),
     ("compute_tangential_without_factor",
      "pair_coeff * * hooke 1e4 0 tangential linear_history 8e3 0 0.5\n" + COMPUTE +
      "\nthermo_style custom step c_m\nrun 0",

@@ -83,3 +83,49 @@ run 100
     assert np.all((factors >= 0.0) & (factors <= 1.0))
     assert np.mean(factors) == pytest.approx(mean, rel=1e-12)
     assert np.min(factors) == pytest.approx(minimum, rel=1e-12)
+
+
+def test_extract_fix_beyond_the_vector_gives_zero(lmp):
+    """an index far beyond the global vector reads 0, as LAMMPS's own fixes, not a crash"""
+    lmp.commands_string(DECK)
+    lmp.commands_string("fix us all acoustic/mindlin 100 frequency 2.0 amplitude 5e-3 source base\nrun 0")
+    assert lmp.extract_fix("us", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR, 10**6) == 0.0
+    assert lmp.extract_fix("us", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR, 0) > 50
+
+
+def test_factors_of_a_setup_that_failed_are_computed_again(lmp):
+    """a run whose setup stops with an ERROR after the fix's update (here the
+    thermo output) never reaches its end: the factors it computed may be lost
+    with its neighbor lists, so the next run's setup updates them again"""
+    lmp.commands_string(DECK)
+    # the variable divides by zero when the thermo output of the setup evaluates it
+    lmp.commands_string("fix us all acoustic/mindlin 100 frequency 2.0 amplitude 5e-3 source base\n"
+                        "variable broken equal 1.0/(step-step)\n"
+                        "thermo_style custom step f_us[2] v_broken")
+    with pytest.raises(Exception):
+        lmp.command("run 0")
+    lmp.commands_string("thermo_style custom step f_us[2]\nrun 0")
+    solves = lmp.extract_fix("us", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR, 11)
+    mean = lmp.extract_fix("us", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR, 1)
+    assert solves == 2.0, "the failed setup's update and the retried one"
+    assert mean < 1.0, "the factors are in the contact histories"
+    lmp.command("run 0")
+    assert lmp.extract_fix("us", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR, 11) == 2.0, \
+        "a run that ended normally: the next setup keeps its factors"
+
+
+def test_a_source_wall_that_touches_nothing_warns(tmp_path):
+    """fix wall/gran far below the layer as the source: every factor stays 1, with a WARNING"""
+    log = tmp_path / "log.lammps"
+    instance = lammps(cmdargs=["-log", str(log), "-screen", "none", "-nocite"])
+    try:
+        instance.commands_string(DECK)
+        instance.commands_string(
+            "fix floor all wall/gran granular hooke 1e4 0 tangential linear_history/acoustic 8e3 0 0.5 "
+            "yplane -5 NULL\n"
+            "fix us all acoustic/mindlin 100 frequency 2.0 amplitude 5e-3 source wall floor\nrun 0")
+        assert instance.extract_fix("us", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR, 1) == 1.0
+    finally:
+        instance.close()
+    text = log.read_text()
+    assert "WARNING: fix acoustic/mindlin us: the source wall floor touches no grain of group all" in text
