@@ -14,6 +14,8 @@
 #             solver auto, undamped and damped
 #   3d        a random 3D layer of 32 000 grains (in.pour3d), static and
 #             flowing, damping 0 and 0.05, solvers auto and iterative
+#   3diter    the 32 000-grain 3D layer, static and flowing, damping 0.05,
+#             solver iterative only
 #   3d100k    a random 3D layer of 100 000 grains, static, damping 0.05,
 #             solver iterative
 #   scaling   the 32 000-grain 3D layer on 1 and 2 ranks, solver iterative
@@ -136,6 +138,12 @@ for set in "${sets[@]}"; do
       # undamped inside the band: the iterative solver's warning, not a hang
       run_case "3d_32k_iter_z0_maxit200" 2 in.layer3d_random -var data "$data" -var damping 0 \
         -var solver iterative -var frequency "$frequency" -var steps 500 -var maxit 200 ;;
+    3diter)
+      data=$(layer3d 32000 40)
+      for flow in 0 1; do
+        run_case "3d_32k_flow${flow}_iterative_f$frequency" 2 in.layer3d_random -var data "$data" -var flow "$flow" \
+          -var damping 0.05 -var solver iterative -var frequency "$frequency"
+      done ;;
     3d100k)
       data=$(layer3d 100000 72)
       run_case "3d_100k_iter_z0.05" 2 in.layer3d_random -var data "$data" -var damping 0.05 \

@@ -308,12 +308,7 @@ template <typename Scalar> void MumpsLdlt<Scalar>::analyzePattern(const MatrixTy
   icntl(m.data, 35) = settings_.low_rank ? 2 : 0;
   cntl(m.data, 7) = settings_.low_rank ? settings_.low_rank_tolerance : 0.0;
   m.run(JOB_ANALYSE);
-  info_ = Eigen::Success;
-  message_.clear();
-  if (infog(m.data, 1) < 0) {
-    info_ = Eigen::InvalidInput;
-    message_ = mumps_error(infog(m.data, 1), infog(m.data, 2));
-  }
+  take_status(false);
 }
 
 template <typename Scalar> void MumpsLdlt<Scalar>::factorize(const MatrixType &a)
@@ -337,10 +332,19 @@ template <typename Scalar> void MumpsLdlt<Scalar>::factorize(const MatrixType &a
     return;
   }
   m.data.a = reinterpret_cast<typename MumpsApi<Scalar>::Entry *>(values_.data());
-  // work arrays too small (more delayed pivots than the analysis foresaw):
-  // relax them and factorise again
+  factorise(false);
+}
+
+// The numeric factorisation, ordered by the host to the team (everyone
+// false) or called by every rank (distributed input); work arrays too small
+// (more delayed pivots than the analysis foresaw) are relaxed and the
+// factorisation run again.
+template <typename Scalar> void MumpsLdlt<Scalar>::factorise(bool everyone)
+{
+  MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
   for (int attempt = 0;; ++attempt) {
-    m.run(JOB_FACTORISE);
+    if (everyone) m.call(JOB_FACTORISE);
+    else m.run(JOB_FACTORISE);
     const int code = infog(m.data, 1);
     if ((code == -8 || code == -9 || code == -14 || code == -15) && attempt < 6) {
       icntl(m.data, 14) = 2 * icntl(m.data, 14) + 20;
@@ -348,11 +352,18 @@ template <typename Scalar> void MumpsLdlt<Scalar>::factorize(const MatrixType &a
     }
     break;
   }
+  take_status(true);
+}
+
+// info() and message() from INFOG(1) and INFOG(2) of the last job
+template <typename Scalar> void MumpsLdlt<Scalar>::take_status(bool factorisation)
+{
+  const MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
   info_ = Eigen::Success;
   message_.clear();
   const int code = infog(m.data, 1);
   if (code < 0) {
-    info_ = (code == -10) ? Eigen::NumericalIssue : Eigen::InvalidInput;
+    info_ = (factorisation && code == -10) ? Eigen::NumericalIssue : Eigen::InvalidInput;
     message_ = mumps_error(code, infog(m.data, 2));
   }
 }
@@ -402,12 +413,7 @@ void MumpsLdlt<Scalar>::analyze_distributed(long n, const std::vector<long> &row
   m.data.jcn_loc = cols_.data();
   m.data.a_loc = reinterpret_cast<typename MumpsApi<Scalar>::Entry *>(values_.data());
   m.call(JOB_ANALYSE);
-  info_ = Eigen::Success;
-  message_.clear();
-  if (infog(m.data, 1) < 0) {
-    info_ = Eigen::InvalidInput;
-    message_ = mumps_error(infog(m.data, 1), infog(m.data, 2));
-  }
+  take_status(false);
 }
 
 template <typename Scalar> void MumpsLdlt<Scalar>::factorize_distributed(const std::vector<Scalar> &values)
@@ -420,22 +426,7 @@ template <typename Scalar> void MumpsLdlt<Scalar>::factorize_distributed(const s
   }
   values_ = values;
   m.data.a_loc = reinterpret_cast<typename MumpsApi<Scalar>::Entry *>(values_.data());
-  for (int attempt = 0;; ++attempt) {
-    m.call(JOB_FACTORISE);
-    const int code = infog(m.data, 1);
-    if ((code == -8 || code == -9 || code == -14 || code == -15) && attempt < 6) {
-      icntl(m.data, 14) = 2 * icntl(m.data, 14) + 20;
-      continue;
-    }
-    break;
-  }
-  info_ = Eigen::Success;
-  message_.clear();
-  const int code = infog(m.data, 1);
-  if (code < 0) {
-    info_ = (code == -10) ? Eigen::NumericalIssue : Eigen::InvalidInput;
-    message_ = mumps_error(code, infog(m.data, 2));
-  }
+  factorise(true);
 }
 
 template <typename Scalar> void MumpsLdlt<Scalar>::solve_distributed(Dense &x) const

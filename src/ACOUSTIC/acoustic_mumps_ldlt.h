@@ -81,19 +81,6 @@ class MumpsTeam {
 
  private:
   friend class MumpsInstance;
-
-enum class MumpsOrdering { Auto, Metis };
-// "auto" or "metis"; throws SolverError listing the allowed names otherwise
-MumpsOrdering mumps_ordering_from_name(const std::string &name);
-std::string mumps_ordering_name(MumpsOrdering ordering);
-// true when the package is built with METIS
-bool metis_available();
-
-struct MumpsSettings {
-  MumpsOrdering ordering = MumpsOrdering::Auto;
-  bool low_rank = false;                // block low-rank factorisation
-  double low_rank_tolerance = 1e-10;    // CNTL(7)
-};
   int attach(MumpsInstance *instance);    // its number in the orders
   void detach(int number);
   void order(int number, int job);        // host: workers run `job` of instance `number`
@@ -168,6 +155,9 @@ template <typename Scalar> class MumpsLdlt {
   std::vector<int> rows_, cols_;    // lower triangle, 1-based
   std::vector<Scalar> values_;
   std::vector<int> pivot_order_;    // ordering metis: position of each variable, 1-based
+
+  void factorise(bool everyone);
+  void take_status(bool factorisation);
 };
 
 extern template class MumpsLdlt<double>;

@@ -235,11 +235,25 @@ void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int 
   // pair granular as it is now (it may have been defined again since init())
   auto *current = dynamic_cast<PairGranular *>(force->pair_match("granular", 1));
   if (!pair || current != pair) init();
-  if (!pair->list || !history || !history->firstflag)
+  if (!neighbor_history_ready())
     error->all(FLERR, "{}: pair granular has no neighbor list yet (a new pair style since the "
                       "last run); use 'run 0' first", command);
   collect_pair(contacts, groupbit, errors);
   collect_walls(contacts, groupbit, errors);
+}
+
+/* ----------------------------------------------------------------------
+   the pair's neighbor list and contact history exist on every rank (a rank
+   without atoms has no history arrays, and needs none)
+------------------------------------------------------------------------- */
+
+bool GranularContactWalker::neighbor_history_ready() const
+{
+  int ready = (pair && history && pair->list &&
+               (pair->list->inum == 0 || history->firstflag)) ? 1 : 0;
+  int ready_everywhere = 0;
+  MPI_Allreduce(&ready, &ready_everywhere, 1, MPI_INT, MPI_MIN, world);
+  return ready_everywhere == 1;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -315,10 +329,7 @@ void GranularContactWalker::collect_pair(std::vector<GranularContact> &contacts,
 bool GranularContactWalker::reset_factors_between_runs(int groupbit)
 {
   locate();
-  int usable = (pair && history && pair->list && history->firstflag) ? 1 : 0;
-  int usable_all = 0;
-  MPI_Allreduce(&usable, &usable_all, 1, MPI_INT, MPI_MIN, world);
-  if (!usable_all) return false;
+  if (!neighbor_history_ready()) return false;
 
   int *type = atom->type;
   int *mask = atom->mask;

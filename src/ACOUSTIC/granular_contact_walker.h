@@ -113,6 +113,7 @@ class GranularContactWalker : protected Pointers {
                    bool needs_factor);
   void locate();    // pair granular and its history fix, nullptr if absent
   void locate_walls();
+  bool neighbor_history_ready() const;    // collective
   void collect_pair(std::vector<GranularContact> &contacts, int groupbit, class CollectiveError &errors);
   void collect_walls(std::vector<GranularContact> &contacts, int groupbit,
                      class CollectiveError &errors);

@@ -69,6 +69,23 @@ std::vector<double> allgather(LammpsInstance &L, const std::vector<double> &mine
   return all;
 }
 
+std::map<ContactKey, double> broadcast_from_rank0(const std::map<ContactKey, double> &factors)
+{
+  std::vector<double> packed;
+  for (const auto &kv : factors) {
+    packed.push_back(static_cast<double>(kv.first.first));
+    packed.push_back(static_cast<double>(kv.first.second));
+    packed.push_back(kv.second);
+  }
+  int n = static_cast<int>(packed.size());
+  MPI_Bcast(&n, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  packed.resize(n);
+  MPI_Bcast(packed.data(), n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  std::map<ContactKey, double> all;
+  for (int k = 0; k < n; k += 3) all[ContactKey(long(packed[k]), long(packed[k + 1]))] = packed[k + 2];
+  return all;
+}
+
 std::vector<LAMMPS_NS::GranularContact> granular_contacts(LammpsInstance &L)
 {
   LAMMPS_NS::GranularContactWalker walker(L.lmp, "test");

@@ -45,6 +45,10 @@ std::vector<LAMMPS_NS::GranularContact> granular_contacts(LammpsInstance &L);
 typedef std::pair<long, long> ContactKey;
 std::map<ContactKey, double> friction_factors(LammpsInstance &L);
 
+// factors known on rank 0 of MPI_COMM_WORLD (e.g. of a serial instance
+// there), on every rank
+std::map<ContactKey, double> broadcast_from_rank0(const std::map<ContactKey, double> &factors);
+
 int mpi_rank();
 int mpi_size();
 

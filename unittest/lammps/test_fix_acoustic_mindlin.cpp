@@ -413,7 +413,6 @@ TEST(FixParallel, OneAndTwoRanksGiveTheSameFactors)
                           "fix ac all acoustic/mindlin 50 frequency 3.0 amplitude 5e-4 source base "
                           "stiffness hertz 1e5 0.3 model full damping 0.05\nrun 0\n";
   std::map<ContactKey, double> serial;
-  std::vector<double> packed;
   if (AcousticTest::mpi_rank() == 0) {
     {
       LammpsInstance W(MPI_COMM_SELF);
@@ -424,18 +423,8 @@ TEST(FixParallel, OneAndTwoRanksGiveTheSameFactors)
     S.command("read_restart " + file);
     S.commands(fix);
     serial = AcousticTest::friction_factors(S);
-    for (const auto &kv : serial) {
-      packed.push_back(kv.first.first);
-      packed.push_back(kv.first.second);
-      packed.push_back(kv.second);
-    }
   }
-  int n = static_cast<int>(packed.size());
-  MPI_Bcast(&n, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  packed.resize(n);
-  MPI_Bcast(packed.data(), n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  serial.clear();
-  for (int k = 0; k < n; k += 3) serial[ContactKey(long(packed[k]), long(packed[k + 1]))] = packed[k + 2];
+  serial = AcousticTest::broadcast_from_rank0(serial);
 
   LammpsInstance P;
   P.command("read_restart " + file);

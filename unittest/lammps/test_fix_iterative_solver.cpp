@@ -223,7 +223,7 @@ TEST(IterativeSolver, OneAndTwoRanksGiveTheSameFactors)
                           "fix ac all acoustic/mindlin 100 frequency 2.0 amplitude 2e-3 source base "
                           "damping 0.05 solver iterative\nrun 0\n";
   const std::string read = "units lj\natom_style sphere\nboundary p p fm\nprocessors * * 1\nread_data " + file + "\n";
-  std::vector<double> packed;
+  std::map<ContactKey, double> serial;
   if (AcousticTest::mpi_rank() == 0) {
     {
       LammpsInstance W(MPI_COMM_SELF);
@@ -232,18 +232,9 @@ TEST(IterativeSolver, OneAndTwoRanksGiveTheSameFactors)
     }
     LammpsInstance S(MPI_COMM_SELF);
     S.commands(read + fix);
-    for (const auto &kv : AcousticTest::friction_factors(S)) {
-      packed.push_back(kv.first.first);
-      packed.push_back(kv.first.second);
-      packed.push_back(kv.second);
-    }
+    serial = AcousticTest::friction_factors(S);
   }
-  int n = static_cast<int>(packed.size());
-  MPI_Bcast(&n, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  packed.resize(n);
-  MPI_Bcast(packed.data(), n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  std::map<ContactKey, double> serial;
-  for (int k = 0; k < n; k += 3) serial[ContactKey(long(packed[k]), long(packed[k + 1]))] = packed[k + 2];
+  serial = AcousticTest::broadcast_from_rank0(serial);
 
   LammpsInstance P;
   P.commands(read + fix);

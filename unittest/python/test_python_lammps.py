@@ -129,3 +129,21 @@ def test_a_source_wall_that_touches_nothing_warns(tmp_path):
         instance.close()
     text = log.read_text()
     assert "WARNING: fix acoustic/mindlin us: the source wall floor touches no grain of group all" in text
+
+
+def test_compute_between_runs_is_current_or_refused(lmp):
+    """compute vibration/modes between runs: the values of the last run while
+    nothing changed; after the packing changed, an ERROR that asks for run 0;
+    after run 0, the values of the new packing"""
+    lmp.commands_string(DECK)
+    lmp.commands_string("compute m all vibration/modes fixed base\nthermo_style custom step c_m\nrun 0")
+    first = np.max(lmp.numpy.extract_compute("m", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR))
+    again = np.max(lmp.numpy.extract_compute("m", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR))
+    assert first == again > 0.0
+    lmp.command("pair_coeff * * hooke 1e6 150 damping mass_velocity tangential linear_history/acoustic 8e5 1.0 0.5")
+    with pytest.raises(Exception, match="the system changed since the last run"):
+        lmp.command('print "$(c_m[1])"')
+    lmp.command("run 0")
+    stiffer = np.max(lmp.numpy.extract_compute("m", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR))
+    # contacts 100 times stiffer: frequencies 10 times higher
+    assert stiffer == pytest.approx(10.0 * first, rel=1e-6)
