@@ -121,6 +121,38 @@ def ensemble(signals):
 # ---------------------------------------------------------------------------
 # statics (paper 003 Table I) and moduli (Table II)
 
+# paper 003, Table I (mean, one standard deviation of the packings or None
+# where the paper gives none), and the stress ratio of its Table II
+PAPER_TABLE_I = {
+    1e-7: {"phi2": (0.818, 0.005), "phi3": (0.561, 0.005), "phi3_star": (0.48, 0.01),
+           "z_star": (3.18, 0.03), "f0": (0.15, 0.02), "mean_force_over_p": (1.31, None),
+           "Z2": (1.49, None), "Z3": (2.81, None), "F2": (0.527, None), "F2_strong": (0.557, None),
+           "sigma_ratio": (0.79, 0.06)},
+    1e-6: {"phi2": (0.814, 0.004), "phi3": (0.558, 0.005), "phi3_star": (0.49, 0.01),
+           "z_star": (3.23, 0.04), "f0": (0.14, 0.02), "mean_force_over_p": (1.27, None),
+           "Z2": (1.50, None), "Z3": (2.83, None), "F2": (0.524, None), "F2_strong": (0.560, None),
+           "sigma_ratio": (0.79, 0.06)},
+    1e-5: {"phi2": (0.809, 0.004), "phi3": (0.554, 0.005), "phi3_star": (0.50, 0.01),
+           "z_star": (3.31, 0.03), "f0": (0.11, 0.02), "mean_force_over_p": (1.22, None),
+           "Z2": (1.49, None), "Z3": (2.77, None), "F2": (0.523, None), "F2_strong": (0.558, None),
+           "sigma_ratio": (0.78, 0.06)},
+    1e-4: {"phi2": (0.815, 0.005), "phi3": (0.558, 0.005), "phi3_star": (0.52, 0.01),
+           "z_star": (3.48, 0.03), "f0": (0.074, 0.015), "mean_force_over_p": (1.06, None),
+           "Z2": (1.51, None), "Z3": (2.90, None), "F2": (0.524, None), "F2_strong": (0.578, None),
+           "sigma_ratio": (0.71, 0.04)},
+}
+
+# the acceptance checks of a packing, in the order of the paper's Table I
+CHECKS = ("phi2", "z_star", "f0", "mean_force_over_p", "Z2", "Z3", "F2", "F2_strong",
+          "sigma_ratio")
+
+
+def paper_row(pressure):
+    """Table I's row at the paper's pressure nearest to `pressure` (in log)"""
+    nearest = min(PAPER_TABLE_I, key=lambda q: abs(math.log(q / pressure)))
+    return nearest, PAPER_TABLE_I[nearest]
+
+
 def rattlers(ids, contacts_i, contacts_j, minimum=2):
     """IDs of the rattlers: grains left with fewer than `minimum` contacts when
     such grains are removed one after the other (wall contacts, j = 0, count)"""
@@ -151,7 +183,8 @@ def static_properties(grains, contacts, width, height, pressure, boundary=3.0, d
     Phi3* (without rattlers; a 2D layer counts as one diameter thick, a 3D
     packing of the given depth has no Phi2), coordination z* of the non-rattlers, fraction
     of rattlers f0, mean normal force <N>/p and the reduced moments
-    Z(2) = <N^2>/<N>^2, Z(3) = <N^3>/<N>^3 -- measured in the bulk, between
+    Z(2) = <N^2>/<N>^2, Z(3) = <N^3>/<N>^3, the fabric F2 = <n_y^2> of all
+    and F2_strong of the strong contacts (N > <N>) -- measured in the bulk, between
     `boundary` and height - `boundary` (grain centres; contacts with at least
     one such grain).  grains: dict or lammps_output.Snapshot with id, y,
     radius; contacts: the columns of fix acoustic/mindlin's local array by
@@ -189,7 +222,30 @@ def static_properties(grains, contacts, width, height, pressure, boundary=3.0, d
     out["mean_force_over_p"] = float(mean / pressure)
     out["Z2"] = float(np.mean(forces ** 2) / mean ** 2)
     out["Z3"] = float(np.mean(forces ** 3) / mean ** 3)
+    # fabric (paper 003 Eq. 6): <n_y^2> over the bulk contacts, and over the
+    # strong ones (normal force above the mean)
+    ny = vertical_normals(grains, ci[in_bulk], cj[in_bulk], width, depth)
+    out["F2"] = float(np.mean(ny ** 2))
+    out["F2_strong"] = float(np.mean(ny[forces > mean] ** 2))
     return out
+
+
+def vertical_normals(grains, contacts_i, contacts_j, width, depth=None):
+    """n_y of the unit normal of each contact (i, j atom IDs; j = 0: a wall,
+    whose normal is vertical), the nearest image along the periodic x of
+    the given width (and z of the given depth, 3D)"""
+    row = {int(i): k for k, i in enumerate(grains["id"].astype(int))}
+    position = np.column_stack([grains["x"], grains["y"], grains["z"]])
+    ny = np.ones(len(contacts_i))
+    for m, (a, b) in enumerate(zip(contacts_i, contacts_j)):
+        if b == 0:
+            continue
+        d = position[row[int(b)]] - position[row[int(a)]]
+        d[0] -= width * np.round(d[0] / width)
+        if depth:
+            d[2] -= depth * np.round(d[2] / depth)
+        ny[m] = d[1] / np.linalg.norm(d)
+    return ny
 
 
 def linear_response(moduli, tolerance=0.25, keys=("C11", "C22", "C33")):

@@ -213,12 +213,12 @@ int ComputeVibrationPulse::parse_endpoint(int iarg, int narg, char **arg, const 
                       "got '{}' where '{}' belongs", CMD, (iarg < narg) ? arg[iarg] : "", word);
   if (strcmp(arg[iarg + 1], "wall") == 0) {
     if (iarg + 2 >= narg)
-      error->all(FLERR, "Illegal {} command: {} wall needs the ID of a fix wall/gran", CMD, word);
+      error->all(FLERR, "Illegal {} command: {} wall needs the ID of a fix wall/gran or wall/gran/region", CMD, word);
     end.wall_fix = arg[iarg + 2];
     Fix *wall = modify->get_fix_by_id(end.wall_fix);
-    if (!wall || !utils::strmatch(wall->style, "^wall/gran$"))
-      error->all(FLERR, "Illegal {} command: {} wall {} is not a fix wall/gran", CMD, word,
-                 end.wall_fix);
+    if (!wall || !(utils::strmatch(wall->style, "^wall/gran$") || utils::strmatch(wall->style, "^wall/gran/region$")))
+      error->all(FLERR, "Illegal {} command: {} wall {} is not a fix wall/gran or "
+                        "wall/gran/region", CMD, word, end.wall_fix);
     return iarg + 3;
   }
   end.group = arg[iarg + 1];
@@ -237,8 +237,9 @@ void ComputeVibrationPulse::init_endpoint(Endpoint &end, const char *word)
   if (!end.wall_fix.empty()) {
     end.wall = network->wall_of_fix(end.wall_fix);
     if (end.wall < 0)
-      error->all(FLERR, "{}: {} wall {} has no plane in the vibration network (it must be a fix "
-                        "wall/gran xplane, yplane or zplane)", CMD, word, end.wall_fix);
+      error->all(FLERR, "{}: {} wall {} is not a wall of the vibration network (it must be a fix "
+                        "wall/gran xplane, yplane or zplane, or a fix wall/gran/region)", CMD,
+                 word, end.wall_fix);
     return;
   }
   const int igroup_end = group->find(end.group);

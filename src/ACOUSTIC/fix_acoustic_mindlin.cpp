@@ -101,12 +101,13 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
   int iarg = 10;
   if (strcmp(arg[9], "wall") == 0) {
     if (narg < 11)
-      error->all(FLERR, "Illegal {} command: source wall needs the ID of a fix wall/gran", CMD);
+      error->all(FLERR, "Illegal {} command: source wall needs the ID of a fix wall/gran or wall/gran/region", CMD);
     source_wall_fix = arg[10];
     Fix *wall = modify->get_fix_by_id(source_wall_fix);
-    if (!wall || !utils::strmatch(wall->style, "^wall/gran$"))
-      error->all(FLERR, "Illegal {} command: source wall {} is not a fix wall/gran; define the "
-                        "vibrating plane with fix wall/gran first", CMD, source_wall_fix);
+    if (!wall || !(utils::strmatch(wall->style, "^wall/gran$") || utils::strmatch(wall->style, "^wall/gran/region$")))
+      error->all(FLERR, "Illegal {} command: source wall {} is not a fix wall/gran or "
+                        "wall/gran/region; define the vibrating wall with one of them first",
+                 CMD, source_wall_fix);
     iarg = 11;
   } else {
     source_group = arg[9];
@@ -380,8 +381,9 @@ void FixAcousticMindlin::init_source()
     source_groupbit = 0;
     source_wall = network->wall_of_fix(source_wall_fix);
     if (source_wall < 0)
-      error->all(FLERR, "{}: source wall {} has no plane in the vibration network (it must be a "
-                        "fix wall/gran xplane, yplane or zplane)", CMD, source_wall_fix);
+      error->all(FLERR, "{}: source wall {} is not a wall of the vibration network (it must be "
+                        "a fix wall/gran xplane, yplane or zplane, or a fix wall/gran/region)",
+                 CMD, source_wall_fix);
     if (!direction_given) {
       // the default drive of a wall: along its normal
       network->wall_normal(source_wall, direction);

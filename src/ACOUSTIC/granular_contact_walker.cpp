@@ -24,6 +24,7 @@
 #include "fix.h"
 #include "fix_neigh_history.h"
 #include "fix_wall_gran.h"
+#include "fix_wall_gran_region.h"
 #include "force.h"
 #include "gran_sub_mod_normal.h"
 #include "gran_sub_mod_tangential_acoustic.h"
@@ -31,6 +32,7 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "pair_granular.h"
+#include "region.h"
 
 #include <cmath>
 
@@ -140,16 +142,18 @@ void GranularContactWalker::init()
 }
 
 /* ----------------------------------------------------------------------
-   the planes of fix wall/gran; other walls are free surfaces of the network
+   the planes of fix wall/gran and the regions of fix wall/gran/region;
+   other walls are free surfaces of the network
 ------------------------------------------------------------------------- */
 
 void GranularContactWalker::locate_walls()
 {
   planes.clear();
   for (auto *fix : modify->get_fix_list()) {
-    if (utils::strmatch(fix->style, "^wall/gran/region")) {
-      error->warning(FLERR, "{}: the contacts with fix {} (wall/gran/region) are not in the "
-                            "vibration network: the wall is a free surface", command, fix->id);
+    if (utils::strmatch(fix->style, "^wall/gran/region$")) {
+      check_model(dynamic_cast<FixWallGran *>(fix)->model,
+                  fmt::format("the contacts with fix {}", fix->id), false);
+      planes.push_back({fix->id, 0, -1, 0.0, true});
       continue;
     }
     if (!utils::strmatch(fix->style, "^wall/gran$")) continue;
@@ -174,8 +178,8 @@ void GranularContactWalker::locate_walls()
     check_model(model, fmt::format("the contacts with fix {}", fix->id), false);
     const double lo = *static_cast<double *>(fix->extract("lo", dim));
     const double hi = *static_cast<double *>(fix->extract("hi", dim));
-    if (lo > -ABSENT_PLANE) planes.push_back({fix->id, 0, *wallstyle, lo});
-    if (hi < ABSENT_PLANE) planes.push_back({fix->id, 1, *wallstyle, hi});
+    if (lo > -ABSENT_PLANE) planes.push_back({fix->id, 0, *wallstyle, lo, false});
+    if (hi < ABSENT_PLANE) planes.push_back({fix->id, 1, *wallstyle, hi, false});
   }
 }
 
@@ -353,6 +357,17 @@ bool GranularContactWalker::reset_factors_between_runs(int groupbit)
 
   // the walls keep their histories with the atoms: set them directly
   for (auto *fix : modify->get_fix_list()) {
+    auto *region_wall = dynamic_cast<FixWallGranRegion *>(fix);
+    if (region_wall) {
+      AcousticFrictionFactor *tangential = acoustic_tangential(region_wall->model);
+      if (!region_wall->history_many || !region_wall->ncontact || !tangential) continue;
+      for (int i = 0; i < atom->nlocal; i++)
+        if ((mask[i] & groupbit) && (mask[i] & fix->groupbit))
+          for (int k = 0; k < region_wall->ncontact[i]; k++)
+            set_friction_factor(region_wall->history_many[i][k] +
+                                tangential->friction_factor_index(), 1.0);
+      continue;
+    }
     if (!utils::strmatch(fix->style, "^wall/gran$")) continue;
     int dim = 0;
     auto **history_one = static_cast<double **>(fix->extract("history", dim));
@@ -379,6 +394,10 @@ void GranularContactWalker::collect_walls(std::vector<GranularContact> &contacts
   tagint *tag = atom->tag;
   for (std::size_t p = 0; p < planes.size(); p++) {
     const WallPlane &plane = planes[p];
+    if (plane.region) {
+      collect_region_wall(contacts, groupbit, static_cast<int>(p), errors);
+      continue;
+    }
     auto *fix = dynamic_cast<FixWallGran *>(modify->get_fix_by_id(plane.fix_id));
     if (!fix) {
       errors.report(fmt::format("{}: fix {} (wall/gran) was deleted since the last run; use 'run 0' "
@@ -423,6 +442,85 @@ void GranularContactWalker::collect_walls(std::vector<GranularContact> &contacts
                                   "F_n = {}, k_n = {}, k_t = {}; check its coefficients", command,
                                   tag[i], plane.fix_id, model->normal_model->name, c.fn, c.kn,
                                   c.kt));
+        continue;
+      }
+      contacts.push_back(c);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   contacts of owned atoms with the surface of the region of a fix
+   wall/gran/region, as the fix finds them (FixWallGranRegion::post_force):
+   the region where it is now (a moving region at its current displacement,
+   taken at rest), its contact history matched by the region's wall index
+------------------------------------------------------------------------- */
+
+void GranularContactWalker::collect_region_wall(std::vector<GranularContact> &contacts,
+                                                int groupbit, int wall, CollectiveError &errors)
+{
+  const std::string &fix_id = planes[wall].fix_id;
+  auto *fix = dynamic_cast<FixWallGranRegion *>(modify->get_fix_by_id(fix_id));
+  if (!fix) {
+    errors.report(fmt::format("{}: fix {} (wall/gran/region) was deleted since the last run; use "
+                              "'run 0' first", command, fix_id));
+    return;
+  }
+  // the fix's region, unless it was deleted since the fix's last init()
+  bool region_exists = false;
+  for (auto *region : domain->get_region_list()) region_exists |= (region == fix->region);
+  if (!region_exists) {
+    errors.report(fmt::format("{}: the region of fix {} (wall/gran/region) changed since the last "
+                              "run; use 'run 0' first", command, fix_id));
+    return;
+  }
+  Region *region = fix->region;
+  if (region->dynamic_check()) region->prematch();
+
+  GranularModel *model = fix->model;
+  double **x = atom->x;
+  double *radius = atom->radius;
+  int *mask = atom->mask;
+  tagint *tag = atom->tag;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit) || !(mask[i] & fix->groupbit)) continue;
+    if (!region->match(x[i][0], x[i][1], x[i][2])) continue;
+    const int nc = region->surface(x[i][0], x[i][1], x[i][2],
+                                   radius[i] + model->pulloff_distance(radius[i], 0.0));
+    for (int ic = 0; ic < nc; ic++) {
+      // the stored history of this region wall, if the fix has one
+      double *history_of_contact = nullptr;
+      if (fix->history_many && fix->ncontact)
+        for (int k = 0; k < fix->ncontact[i]; k++)
+          if (fix->walls[i][k] == region->contact[ic].iwall)
+            history_of_contact = fix->history_many[i][k];
+      model->dx[0] = region->contact[ic].delx;
+      model->dx[1] = region->contact[ic].dely;
+      model->dx[2] = region->contact[ic].delz;
+      model->radi = radius[i];
+      model->radj = region->contact[ic].radius;
+      model->r = region->contact[ic].r;
+      model->history = history_of_contact;
+      if (model->beyond_contact) model->touch = history_of_contact && history_of_contact[0] != 0.0;
+      if (!model->check_contact()) continue;
+      if (model->rsq == 0.0) {
+        errors.report(fmt::format("{}: the centre of atom {} lies on the surface of the region of "
+                                  "fix {}: the contact has no normal", command, tag[i], fix_id));
+        continue;
+      }
+      GranularContact c;
+      c.i = i;
+      c.j = -1;
+      c.wall = wall;
+      c.owned = true;
+      c.radi = radius[i];
+      c.radj = 0.0;
+      linearise(model, c);
+      if (!(std::isfinite(c.fn) && std::isfinite(c.fncrit) && std::isfinite(c.kn) &&
+            std::isfinite(c.kt))) {
+        errors.report(fmt::format("{}: contact of atom {} with fix {}: its normal model {} gives "
+                                  "F_n = {}, k_n = {}, k_t = {}; check its coefficients", command,
+                                  tag[i], fix_id, model->normal_model->name, c.fn, c.kn, c.kt));
         continue;
       }
       contacts.push_back(c);

@@ -58,12 +58,15 @@ struct GranularContact {
                             // nullptr for a wall whose tangential model has none
 };
 
-// a plane of fix wall/gran (one fix may have a lower and an upper plane)
+// a rigid wall of the network: a plane of fix wall/gran (one fix may have a
+// lower and an upper plane), or the surface of the region of a fix
+// wall/gran/region (its contacts found by the region, as the fix finds them)
 struct WallPlane {
   std::string fix_id;
-  int side;                 // 0: the lower plane of the fix, 1: the upper one
-  int axis;                 // 0, 1, 2: normal along x, y, z
-  double position;          // coordinate of the plane along its axis
+  int side;                 // 0: the lower plane of the fix, 1: the upper one (region: 0)
+  int axis;                 // 0, 1, 2: normal along x, y, z; -1: a region's surface
+  double position;          // coordinate of the plane along its axis (region: unused)
+  bool region;              // a fix wall/gran/region
 };
 
 class GranularContactWalker : protected Pointers {
@@ -115,6 +118,8 @@ class GranularContactWalker : protected Pointers {
   void locate_walls();
   bool neighbor_history_ready() const;    // collective
   void collect_pair(std::vector<GranularContact> &contacts, int groupbit, class CollectiveError &errors);
+  void collect_region_wall(std::vector<GranularContact> &contacts, int groupbit, int wall,
+                           class CollectiveError &errors);
   void collect_walls(std::vector<GranularContact> &contacts, int groupbit,
                      class CollectiveError &errors);
 };

@@ -21,12 +21,14 @@
 #include "domain.h"
 #include "fix.h"
 #include "fix_wall_gran.h"
+#include "fix_wall_gran_region.h"
 #include "force.h"
 #include "gran_sub_mod.h"
 #include "granular_model.h"
 #include "lammps.h"
 #include "modify.h"
 #include "pair_granular.h"
+#include "region.h"
 #include "utils.h"
 
 #include <cstring>
@@ -114,6 +116,16 @@ std::uint64_t LAMMPS_NS::granular_state_fingerprint(LAMMPS *lmp)
     for (const char *name : {"lo", "hi"}) {
       const auto *value = static_cast<double *>(fix->extract(name, dim));
       if (value) f.mix(*value);
+    }
+    // the region of a wall/gran/region and where it has moved
+    // (its pointer is read only while the region exists: a region deleted
+    // between runs leaves the fix's pointer dangling until its next init())
+    auto *region_wall = dynamic_cast<FixWallGranRegion *>(fix);
+    if (!region_wall) continue;
+    for (const Region *region : domain->get_region_list()) {
+      if (region != region_wall->region) continue;
+      f.mix(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(region)));
+      for (double value : {region->dx, region->dy, region->dz, region->theta}) f.mix(value);
     }
   }
   return f.value();

@@ -188,6 +188,10 @@ int VibrationNetwork::wall_of_fix(const std::string &fix_id) const
 void VibrationNetwork::wall_normal(int wall, double *normal) const
 {
   normal[0] = normal[1] = normal[2] = 0.0;
+  if (walls()[wall].axis < 0)
+    error->all(FLERR, "{}: fix {} is a wall/gran/region, whose surface has no single normal; "
+                      "give the direction of its drive with the keyword direction", command,
+               walls()[wall].fix_id);
   normal[walls()[wall].axis] = 1.0;
 }
 

@@ -80,8 +80,9 @@ def test_rattlers_are_removed_one_after_the_other():
 def test_static_properties_of_a_small_packing():
     # four grains of radius 0.5 in the bulk of a 4 x 10 cell (boundary 3):
     # 1, 2, 3 in a triangle of contacts, 4 a rattler; forces 1, 2, 3
-    grains = {"id": np.array([1, 2, 3, 4]), "y": np.array([4.0, 4.0, 4.9, 6.0]),
-              "radius": np.full(4, 0.5)}
+    # (1 and 2 touch across the periodic x: their nearest images are 1 apart)
+    grains = {"id": np.array([1, 2, 3, 4]), "x": np.array([0.2, 3.2, 3.7, 2.0]),
+              "y": np.array([4.0, 4.0, 4.9, 6.0]), "z": np.zeros(4), "radius": np.full(4, 0.5)}
     contacts = {0: np.array([1, 2, 3]), 1: np.array([2, 3, 1]), 2: np.array([1.0, 2.0, 3.0])}   # by position
     out = sound.static_properties(grains, contacts, width=4.0, height=10.0, pressure=0.5, boundary=3.0)
     area = 4.0 * 4.0
@@ -93,6 +94,10 @@ def test_static_properties_of_a_small_packing():
     assert out["mean_force_over_p"] == pytest.approx(2.0 / 0.5)
     assert out["Z2"] == pytest.approx((1 + 4 + 9) / 3 / 4.0)
     assert out["Z3"] == pytest.approx((1 + 8 + 27) / 3 / 8.0)
+    # fabric: 1-2 horizontal, 2-3 and 3-1 at n_y^2 = 0.81 / 1.06; the strong
+    # contact (force 3 > mean 2) is 3-1
+    assert out["F2"] == pytest.approx(2.0 / 3.0 * 0.81 / 1.06)
+    assert out["F2_strong"] == pytest.approx(0.81 / 1.06)
     # the same grains in a 3D cell of depth 2: volume fractions halve, no Phi2
     deep = sound.static_properties(grains, contacts, width=4.0, height=10.0, pressure=0.5, boundary=3.0, depth=2.0)
     assert "phi2" not in deep

@@ -147,6 +147,86 @@ TEST(WallsInTheNetwork, DefaultDirectionIsTheSourceWallNormal)
   for (int t = 1; t <= n; t++) EXPECT_EQ(amplitudes[0][t], amplitudes[1][t]) << "atom " << t;
 }
 
+// the chain with one wall as the plane region of a fix wall/gran/region
+// (the paper-003 piston: a region moved by a variable, here at rest)
+std::string chain_with_region_wall(int n, double m, double k, const std::string &which)
+{
+  std::string d = chain_deck(n, m, k);
+  const std::string model = "hooke " + num(k) + " 0 tangential linear_history/acoustic " +
+                            num(0.5 * k) + " 0 0.5";
+  const std::size_t at = d.find("fix " + which + " ");
+  const std::size_t end = d.find('\n', at);
+  const bool top = which == "top";
+  const std::string where = top ? num(0.98 + (n - 1) * 0.99) : "0.0";
+  d.replace(at, end - at,
+            "variable still equal 0.0*step\n"
+            "region " + which + "_plane plane 0 0 " + where + " 0 0 " + (top ? "-1" : "1") +
+            " move NULL NULL v_still units box\n"
+            "fix " + which + " all wall/gran/region granular " + model + " region " + which +
+            "_plane");
+  return d;
+}
+
+TEST(WallsInTheNetwork, RegionWallIsAWallOfTheNetwork)
+{
+  const int n = 12;
+  const double m = 1.0, k = 2000.0;
+  // detector: a moving plane region
+  {
+    LammpsInstance L;
+    L.commands(chain_with_region_wall(n, m, k, "top"));
+    L.commands("compute pulse all vibration/pulse source wall bottom detector wall top duration 3.0 "
+               "samples 301 method modes\nthermo_style custom step c_pulse[3]\nrun 0\n");
+    const ChainMatch match = match_chain(compute_of(L, "pulse"), 301, n, m, k);
+    ASSERT_GT(match.peak, 1.0) << "the pulse reaches the region wall";
+    EXPECT_LE(match.largest, 1e-6 * match.peak);
+  }
+  // source: a region has no single normal, the direction is given
+  {
+    LammpsInstance L;
+    L.commands(chain_with_region_wall(n, m, k, "bottom"));
+    L.commands("compute pulse all vibration/pulse source wall bottom detector wall top duration 3.0 "
+               "samples 301 method modes direction 0 0 1\n"
+               "thermo_style custom step c_pulse[3]\nrun 0\n");
+    const ChainMatch match = match_chain(compute_of(L, "pulse"), 301, n, m, k);
+    ASSERT_GT(match.peak, 1.0);
+    EXPECT_LE(match.largest, 1e-6 * match.peak);
+  }
+  {
+    LammpsInstance L;
+    L.commands(chain_with_region_wall(n, m, k, "bottom"));
+    try {
+      L.commands("fix ac all acoustic/mindlin 100 frequency 2.0 amplitude 1e-3 source wall bottom\n"
+                 "run 0");
+      ADD_FAILURE() << "no error for a region source without direction";
+    } catch (LAMMPS_NS::LAMMPSException &e) {
+      EXPECT_NE(std::string(e.what()).find("give the direction of its drive"), std::string::npos)
+          << e.what();
+    }
+  }
+  // the fix: a region source gives the factors of the same plane of fix wall/gran
+  std::vector<double> amplitudes[2];
+  for (int region = 0; region < 2; region++) {
+    LammpsInstance F;
+    F.commands(region ? chain_with_region_wall(n, m, k, "bottom") : chain_deck(n, m, k));
+    F.command("fix ac all acoustic/mindlin 100 frequency 2.0 amplitude 1e-3 source wall bottom "
+              "direction 0 0 1\nrun 0");
+    LAMMPS_NS::Fix *fix = F.lmp->modify->get_fix_by_id("ac");
+    std::vector<double> mine;
+    for (int i = 0; i < F.lmp->atom->nlocal; i++) {
+      mine.push_back(F.lmp->atom->tag[i]);
+      mine.push_back(fix->array_atom[i][2]);    // U0 |q_z|
+    }
+    const std::vector<double> all = AcousticTest::allgather(F, mine);
+    amplitudes[region].assign(n + 1, 0.0);
+    for (std::size_t j = 0; j < all.size(); j += 2)
+      amplitudes[region][static_cast<int>(all[j])] = all[j + 1];
+  }
+  EXPECT_GT(*std::max_element(amplitudes[0].begin(), amplitudes[0].end()), 1e-3);
+  for (int t = 1; t <= n; t++)
+    EXPECT_NEAR(amplitudes[0][t], amplitudes[1][t], 1e-12 * amplitudes[0][t]) << "atom " << t;
+}
+
 TEST(PulseThroughLammps, IntegrateAgreesWithModes)
 {
   LammpsInstance L;

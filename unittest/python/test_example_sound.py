@@ -40,11 +40,52 @@ def test_chain_exponents(tmp_path):
         assert -slopes[-1] == pytest.approx(gamma, abs=0.01), condition
 
 
+def thermo_columns(log_text, first):
+    """the numeric rows of every thermo table of a log whose header starts
+    with `first`, as a dict of columns"""
+    rows, names = [], None
+    for line in log_text.splitlines():
+        words = line.split()
+        if words and words[0] == "Step" and len(words) > 1 and words[1] == first:
+            names = words
+            continue
+        if names and len(words) == len(names):
+            try:
+                rows.append([float(w) for w in words])
+                continue
+            except ValueError:
+                pass
+    table = np.array(rows)
+    return {name: table[:, k] for k, name in enumerate(names)}
+
+
 def test_small_packing(tmp_path):
-    log = run_deck(tmp_path, "in.sound", {"here": HERE, "p": "1e-4", "W": 8, "H": 8, "seed": 1, "dir": tmp_path})
+    log = run_deck(tmp_path, "in.sound", {"here": HERE, "p": "1e-4", "W": 8, "H": 8, "seed": 1, "dir": tmp_path,
+                                          "thermo_every": 10})
     summary = sound.read_summary(str(tmp_path / "summary.txt"))
     assert summary["p"] == pytest.approx(1e-4, rel=0.02)
     assert summary["max_acceleration"] < 1e-10
+    assert "packing: at rest" in log
+    assert "fix             drag" not in log.split("packing: at rest")[0], "no drag while packing"
+    # the piston moves continuously under its constant force: between two
+    # thermo lines (10 steps) it moves no farther than it could fall freely
+    # from its start with the whole force p A on it (energy: v^2 <= 2 p A
+    # (h0 - h) / M), i.e. no jumps
+    compression = thermo_columns((tmp_path / "compression.log").read_text(), "v_h")
+    h, step = compression["v_h"], compression["Step"]
+    assert h[0] - h[-1] > 5.0, "the piston came down"
+    dt = 0.15 * np.sqrt(np.pi / 6 * 0.512 / (2 * 0.5 * (3 * 10 * 1e-4) ** (1 / 3)))
+    area, mass = 8.0 * 1.0, summary["piston_mass"] * np.sum(
+        lammps_output.read_dump(str(tmp_path / "grains.dump"))[-1]["mass"])
+    fastest = np.sqrt(2 * 1e-4 * area * (h[0] - h.min()) / mass)
+    moves = np.abs(np.diff(h)) / np.maximum(np.diff(step), 1)
+    assert moves.max() <= fastest * dt * 1.01, "a jump of the piston"
+    # the paper's anisotropy of a load-controlled compression: sigma1/sigma2 < 1
+    checks = sound.read_summary(str(tmp_path / "checks.txt"))
+    assert checks["sigma_ratio"] < 1.0
+    for key in sound.CHECKS:
+        assert key in checks, key
+    assert "checks: z_star" in log
     # the static network: every contact loaded, the bottom wall among them
     contacts = lammps_output.read_dump(str(tmp_path / "contacts.dump"))[-1]
     assert np.all(contacts[2] > 0.0)

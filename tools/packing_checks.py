@@ -1,0 +1,63 @@
+"""Acceptance checks of one paper-003 packing, beside the paper's Table I.
+
+Called by examples/sound/in.packing through LAMMPS's `shell` command once
+the packing is at rest, on the dumps it has just written:
+
+  /usr/bin/python3 tools/packing_checks.py DIR P W H D SIGMA_RATIO
+
+DIR holds grains.dump (id x y z radius mass) and contacts.dump (fix
+acoustic/mindlin's local array: i, j (0 for a wall), f_n, k_n); P the target
+pressure, W the width, H the height of the piston, D the depth (0: 2D),
+SIGMA_RATIO the bulk sigma11/sigma22 of LAMMPS's contact virial.  Writes
+DIR/checks.txt (one "key value" per line) and DIR/checks.lmp, print commands
+that the deck includes so that the checks reach its log.
+"""
+import os
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, here)
+import lammps_output  # noqa: E402
+import sound  # noqa: E402
+
+
+def packing_checks(directory, pressure, width, height, depth, sigma_ratio):
+    """Table I's quantities of the packing in `directory` and the stress ratio"""
+    grains = lammps_output.read_dump(os.path.join(directory, "grains.dump"))[-1]
+    contacts = lammps_output.read_dump(os.path.join(directory, "contacts.dump"))[-1]
+    checks = sound.static_properties(grains, contacts, width, height, pressure,
+                                     depth=depth or None)
+    checks["sigma_ratio"] = sigma_ratio
+    return checks
+
+
+def print_lines(checks, pressure):
+    """LAMMPS print commands: each check beside Table I's value at the nearest
+    pressure of the paper"""
+    nearest, row = sound.paper_row(pressure)
+    lines = [f'print "checks: the packing beside paper 003 Table I at p = {nearest:g} '
+             f'(Table II for sigma1/sigma2; paper: mean +- s.d.)"']
+    for key in sound.CHECKS:
+        if key not in checks:
+            continue
+        mean, spread = row[key]
+        paper = f"{mean:g}" + (f" +- {spread:g}" if spread is not None else "")
+        lines.append(f'print "checks: {key:18s} {checks[key]:10.4f}   paper {paper}"')
+    return lines
+
+
+def main(argv):
+    if len(argv) != 7:
+        sys.exit(__doc__)
+    directory = argv[1]
+    pressure, width, height, depth, sigma_ratio = (float(a) for a in argv[2:])
+    checks = packing_checks(directory, pressure, width, height, depth, sigma_ratio)
+    with open(os.path.join(directory, "checks.txt"), "w") as out:
+        for key, value in checks.items():
+            out.write(f"{key} {value:.10g}\n")
+    with open(os.path.join(directory, "checks.lmp"), "w") as out:
+        out.write("\n".join(print_lines(checks, pressure)) + "\n")
+
+
+if __name__ == "__main__":
+    main(sys.argv)
