@@ -19,13 +19,6 @@ import sound  # noqa: E402
 import sound_figures  # noqa: E402
 
 
-# paper 003, Table I: Phi2, Phi3, Phi3*, z*, f0, <N/p>, Z(2), Z(3)
-PAPER_TABLE_I = {
-    1e-7: ("0.818 ± 0.005", "0.561 ± 0.005", "0.48 ± 0.01", "3.18 ± 0.03", "0.15 ± 0.02", "1.31", "1.49", "2.81"),
-    1e-6: ("0.814 ± 0.004", "0.558 ± 0.005", "0.49 ± 0.01", "3.23 ± 0.04", "0.14 ± 0.02", "1.27", "1.50", "2.83"),
-    1e-5: ("0.809 ± 0.004", "0.554 ± 0.005", "0.50 ± 0.01", "3.31 ± 0.03", "0.11 ± 0.02", "1.22", "1.49", "2.77"),
-    1e-4: ("0.815 ± 0.005", "0.558 ± 0.005", "0.52 ± 0.01", "3.48 ± 0.03", "0.074 ± 0.015", "1.06", "1.51", "2.90"),
-}
 # paper 003, Table II: sigma1/sigma2, C11, C12, C22, C33
 PAPER_TABLE_II = {
     1e-7: ("0.79 ± 0.06", "(9.9 ± 0.9)e-4", "(8.1 ± 0.4)e-4", "(13.9 ± 0.8)e-4", "(1.2 ± 0.4)e-4"),
@@ -37,15 +30,65 @@ PAPER_TABLE_II = {
 PAPER_C22_PHI3STAR = {1e-7: (13.9e-4, 0.48), 1e-6: (3.2e-3, 0.49), 1e-5: (7.4e-3, 0.50), 1e-4: (1.88e-2, 0.52)}
 
 
-def samples(out):
-    """(p, H, seed) -> directory of every finished sample"""
+SAMPLE = re.compile(r"p([0-9.e+-]+)_H([0-9]+)_s([0-9]+)(_m([0-9.e+-]+))?(_v([0-9.e+-]+))?")
+DEFAULT_PISTON = ("1", "0")    # run_production.sh: SOUND_PISTON_MASS, SOUND_PISTON_SPEED
+
+
+def sample_piston(match):
+    """(mass, speed) of a sample directory's name, as run_production.sh writes them"""
+    return (match.group(5) or DEFAULT_PISTON[0], match.group(7) or DEFAULT_PISTON[1])
+
+
+def samples(out, piston=DEFAULT_PISTON):
+    """(p, H, seed) -> directory of every finished sample made with the
+    given piston (mass, speed): the default one (directories without a
+    suffix) unless told"""
     found = {}
     for name in sorted(os.listdir(out)):
-        match = re.fullmatch(r"p([0-9.e+-]+)_H([0-9]+)_s([0-9]+)", name)
+        match = SAMPLE.fullmatch(name)
         path = os.path.join(out, name)
-        if match and os.path.exists(os.path.join(path, "moduli.txt")):
-            found[(float(match.group(1)), int(match.group(2)), int(match.group(3)))] = path
+        if not (match and os.path.exists(os.path.join(path, "moduli.txt"))):
+            continue
+        if sample_piston(match) != tuple(piston):
+            continue
+        found[(float(match.group(1)), int(match.group(2)), int(match.group(3)))] = path
     return found
+
+
+def pistons(out):
+    """the (mass, speed) of the pistons of the sample directories"""
+    return sorted({sample_piston(match) for match in map(SAMPLE.fullmatch, os.listdir(out)) if match},
+                  key=lambda piston: (float(piston[0]), float(piston[1])))
+
+
+def mean_standard_error(values):
+    """mean and standard error of the mean"""
+    values = np.asarray(values, dtype=float)
+    if len(values) < 2:
+        return float(values.mean()), 0.0
+    return float(values.mean()), float(values.std(ddof=1) / math.sqrt(len(values)))
+
+
+def checks_table(per_sample, pressures, height=25):
+    """the acceptance checks of the packings (checks.txt of each) of the
+    given height, per pressure: mean ± standard error, beside Table I, and
+    how many of our standard errors separate the two"""
+    rows = []
+    for p in pressures:
+        at = [r for (q, H, _), r in per_sample.items() if q == p and H == height and "z_star" in r]
+        if not at:
+            continue
+        nearest, paper = sound.paper_row(p)
+        for key in sound.CHECKS:
+            values = [r[key] for r in at if key in r]
+            if not values:
+                continue
+            mean, error = mean_standard_error(values)
+            reference, spread = paper[key]
+            distance = abs(mean - reference) / error if error > 0 else math.inf
+            rows.append({"p": p, "key": key, "samples": len(values), "mean": mean, "standard_error": error,
+                         "paper": reference, "paper_sd": spread, "standard_errors_off": distance})
+    return rows
 
 
 def sample_results(path):
@@ -60,6 +103,14 @@ def sample_results(path):
     contacts = lammps_output.read_dump(os.path.join(path, "contacts.dump"))[-1]
     result.update(sound.static_properties(grains, contacts, summary["W"], summary["h"], summary["p"],
                                           depth=summary.get("D") or None))
+    # the packing came to rest (every acceleration below the criterion) within
+    # the deck's max_checks (in.packing prints "packing: at rest" or "NOT at rest")
+    with open(os.path.join(path, "log.lammps")) as handle:
+        result["at_rest"] = any(line.startswith("packing: at rest") for line in handle)
+    checks_path = os.path.join(path, "checks.txt")
+    if os.path.exists(checks_path):
+        # the packing's own checks (bulk sigma1/sigma2 of the contact virial at rest)
+        result["sigma_ratio"] = sound.read_summary(checks_path)["sigma_ratio"]
     if "p_peak" in summary:
         result["overshoot"] = summary["p_peak"] / summary["p"]
     if not summary.get("D"):
@@ -121,10 +172,13 @@ def main():
     # target belongs to no pressure series
     off_target = sorted(os.path.basename(found[key]) for key, r in per_sample.items()
                         if abs(r["p"] / key[0] - 1.0) > 0.05)
-    per_sample = {key: r for key, r in per_sample.items() if os.path.basename(found[key]) not in off_target}
+    # nor does a packing that did not come to rest
+    not_at_rest = sorted(os.path.basename(found[key]) for key, r in per_sample.items() if not r["at_rest"])
+    per_sample = {key: r for key, r in per_sample.items()
+                  if os.path.basename(found[key]) not in off_target + not_at_rest}
     pressures = sorted({p for p, _, _ in per_sample})
     results = {"samples": {f"p{p:g}_H{H}_s{s}": r for (p, H, s), r in per_sample.items()},
-               "off_target": off_target, "pressures": {}}
+               "off_target": off_target, "not_at_rest": not_at_rest, "pressures": {}}
     lines = []
     for p in pressures:
         seeds = sorted({s for (q, _, s) in per_sample if q == p})
@@ -148,8 +202,9 @@ def main():
         if gammas:
             entry["gamma"] = mean_std(gammas)
             entry["alpha"] = mean_std(alphas)
-        for key in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3",
-                    "sigma1_over_sigma2", "overshoot", "max_acceleration", "wall_seconds"):
+        for key in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3", "F2",
+                    "F2_strong", "sigma_ratio", "sigma1_over_sigma2", "overshoot", "max_acceleration",
+                    "packing_steps", "wall_seconds"):
             if tall and key in tall[0]:
                 entry[key] = mean_std([r[key] for r in tall])
         # moduli: the samples whose response stayed linear (no rearrangement),
@@ -217,6 +272,23 @@ def main():
     if series:
         results["disordered_1e-4"] = series
 
+    results["checks"] = checks_table(per_sample, pressures)
+    # the same checks for every piston (mass, dashpot speed) at p = 1e-4, H = 25
+    results["pistons"] = {}
+    every_piston = pistons(out)
+    for piston in every_piston if len(every_piston) > 1 else []:
+        every = [sample_results(path) for key, path in samples(out, piston).items()
+                 if key[0] == 1e-4 and key[1] == 25]
+        at = [r for r in every if r["at_rest"]]
+        entry = {"samples": f"{len(at)} of {len(every)} at rest"}
+        if not at:
+            results["pistons"][f"mass {piston[0]}, dashpot speed {piston[1]}"] = entry
+            continue
+        for key in sound.CHECKS + ("overshoot", "packing_steps"):
+            if all(key in r for r in at):
+                entry[key] = mean_standard_error([r[key] for r in at])
+        results["pistons"][f"mass {piston[0]}, dashpot speed {piston[1]}"] = entry
+
     with open(os.path.join(out, "results.json"), "w") as handle:
         json.dump(results, handle, indent=1, default=float)
 
@@ -231,6 +303,10 @@ def main():
             return value
         return fmt.format(value)
 
+    def paper_cell(value):
+        mean, spread = value
+        return f"{mean:g}" + (f" ± {spread:g}" if spread is not None else "")
+
     def table_head(titles, columns):
         """title lines, a blank line, the header and separator of a markdown table"""
         lines.extend(titles + [""])
@@ -238,14 +314,37 @@ def main():
         lines.append("|" + "---|" * len(columns))
 
     table_head(["Table I (bulk of the H = 25 packings; paper: 30 samples per pressure)"],
-               ["p", "source", "samples", "Φ2", "Φ3", "Φ3*", "z*", "f0", "⟨N⟩/p", "Z(2)", "Z(3)"])
+               ["p", "source", "samples", "Φ2", "Φ3", "Φ3*", "z*", "f0", "⟨N⟩/p", "Z(2)", "Z(3)", "F2",
+                "F2^S"])
     for p in pressures:
         e = results["pressures"][f"{p:g}"]
-        if p in PAPER_TABLE_I:
-            lines.append(f"| {p:g} | paper 003 (2D) | 30 | " + " | ".join(PAPER_TABLE_I[p]) + " |")
+        if p in sound.PAPER_TABLE_I:
+            lines.append(f"| {p:g} | paper 003 (2D) | 30 | " + " | ".join(
+                paper_cell(sound.PAPER_TABLE_I[p][k]) for k in
+                ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3", "F2",
+                 "F2_strong")) + " |")
         lines.append(f"| {p:g} | ACOUSTIC | {e['tall_samples']} | " + " | ".join(
-            cell(e, k) for k in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3")) + " |")
+            cell(e, k) for k in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3",
+                                 "F2", "F2_strong")) + " |")
     lines.append("")
+    table_head(["Acceptance checks of the H = 25 packings: ours mean ± standard error, the paper's mean",
+                "(± its standard deviation), and how many of our standard errors lie between them",
+                "(σ1/σ2: bulk contact virial of the packing at rest; paper: Table II)"],
+               ["p", "check", "samples", "ACOUSTIC", "paper 003", "|Δ| / s.e."])
+    for row in results["checks"]:
+        lines.append(f"| {row['p']:g} | {row['key']} | {row['samples']} | {row['mean']:.4g} ± "
+                     f"{row['standard_error']:.2g} | {paper_cell((row['paper'], row['paper_sd']))} | "
+                     f"{row['standard_errors_off']:.1f} |")
+    lines.append("")
+    if results["pistons"]:
+        columns = list(sound.CHECKS) + ["overshoot", "packing_steps"]
+        table_head(["The piston (mass in units of the grains', dashpot speed: 0 = free): checks of the",
+                    "H = 25 packings at p = 1e-4, mean ± standard error; overshoot = p_peak / p at the checks"],
+                   ["piston", "samples"] + columns)
+        for name, entry in results["pistons"].items():
+            lines.append(f"| {name} | {entry['samples']} | " + " | ".join(
+                f"{entry[k][0]:.4g} ± {entry[k][1]:.2g}" if k in entry else "-" for k in columns) + " |")
+        lines.append("")
     table_head(["Table II (H = 25 packings whose response stayed linear; mean ± standard deviation;",
                 "moduli samples: linear in compression and stretch / in shear)"],
                ["p", "source", "σ1/σ2", "p_peak/p", "moduli samples", "C11", "C12", "C12 (from ε11)", "C22", "C33"])
@@ -279,6 +378,7 @@ def main():
             f" | {paper_c_l} | " + " | ".join(cell(e, k) for k in ("gamma", "alpha")) + " |")
     lines.append("")
     lines.append(f"packings left out (final pressure more than 5 % from the target): {off_target or 'none'}")
+    lines.append(f"packings left out (not at rest within the deck's max_checks): {not_at_rest or 'none'}")
     if "log_overshoot_stress_ratio_correlation" in results:
         lines.append("")
         lines.append("correlation of sigma1/sigma2 with log(p_peak/p) over all packings: "

@@ -7,7 +7,11 @@
 # Usage: examples/sound/run_production.sh [BUILD_DIR]
 # Environment: SOUND_SEEDS (default "1 2 3 4"), SOUND_PRESSURES, SOUND_HEIGHTS,
 # SOUND_WIDTH (24), SOUND_DEPTH (0: 2D; > 0: 3D packings of monodisperse
-# spheres, that deep), SOUND_OUT (out).  The 3D samples of RESULTS.md:
+# spheres, that deep), SOUND_OUT (out), SOUND_PISTON_MASS (1: the piston's
+# mass in units of the grains'; other values go to ..._m<mass>/ directories),
+# SOUND_PISTON_SPEED (0: a free piston; > 0: the terminal speed of a dashpot
+# on the piston, in ..._v<speed>/ directories).
+# The 3D samples of RESULTS.md:
 #   SOUND_PRESSURES=1e-4 SOUND_SEEDS="1 2" SOUND_WIDTH=8 SOUND_DEPTH=8 SOUND_OUT=out3d run_production.sh
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -21,15 +25,20 @@ heights=${SOUND_HEIGHTS:-25 8}
 width=${SOUND_WIDTH:-24}
 depth=${SOUND_DEPTH:-0}
 out=$here/${SOUND_OUT:-out}
+mass=${SOUND_PISTON_MASS:-1}
+speed=${SOUND_PISTON_SPEED:-0}
+suffix=""
+[ "$mass" = "1" ] || suffix="_m$mass"
+[ "$speed" = "0" ] || suffix="${suffix}_v$speed"
 mkdir -p "$out"
 for p in $pressures; do for H in $heights; do for s in $seeds; do
   echo "$p $H $s"
 done; done; done | xargs -P "$jobs" -L 1 bash -c '
-  p=$0; H=$1; s=$2; dir='"$out"'/p${p}_H${H}_s${s}
+  p=$0; H=$1; s=$2; dir='"$out"'/p${p}_H${H}_s${s}'"$suffix"'
   [ -f "$dir/moduli.txt" ] && exit 0
   mkdir -p "$dir"
   start=$(date +%s)
-  '"$lmp"' -in '"$here"'/in.sound -var here '"$here"' -var p $p -var W '"$width"' -var D '"$depth"' -var H $H -var seed $s \
+  '"$lmp"' -in '"$here"'/in.sound -var here '"$here"' -var p $p -var W '"$width"' -var D '"$depth"' -var H $H -var seed $s -var piston_mass '"$mass"' -var piston_speed '"$speed"' \
     -var dir "$dir" -log "$dir/log.lammps" -screen none -nocite \
     || { echo "p=$p H=$H seed=$s: FAILED, see $dir/log.lammps"; exit 0; }
   echo "wall_seconds $(( $(date +%s) - start ))" >> "$dir/summary.txt"

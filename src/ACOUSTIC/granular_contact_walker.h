@@ -13,10 +13,11 @@
 
 /* ----------------------------------------------------------------------
    The current contacts of pair_style granular, read from the pair style's
-   own models and history (as fix granular/mdr walks them), and those of
-   the planes of fix wall/gran (read through FixWallGran::extract(), which
-   cmake/patches/fix-wall-gran-extract.patch adds to LAMMPS), linearised
-   for the vibration network of the ACOUSTIC package:
+   own models and history (as fix granular/mdr walks them), those of the
+   planes of fix wall/gran (read through FixWallGran::extract(), which
+   cmake/patches/fix-wall-gran-extract.patch adds to LAMMPS) and those of
+   the regions of fix wall/gran/region (its public region and histories),
+   linearised for the vibration network of the ACOUSTIC package:
      k_n = dF_n/d(delta) of the contact's normal model (closed form for
            hooke, hertz, hertz/material, dmt; a centred difference of the
            model's own force for jkr and any other model without history),
