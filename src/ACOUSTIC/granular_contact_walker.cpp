@@ -118,8 +118,9 @@ void GranularContactWalker::locate()
 
 /* ---------------------------------------------------------------------- */
 
-void GranularContactWalker::init()
+void GranularContactWalker::init(bool with_regions)
 {
+  region_walls = with_regions;
   locate();
   if (!pair)
     error->all(FLERR, "{} requires pair_style granular with a tangential <model>/acoustic "
@@ -138,7 +139,7 @@ void GranularContactWalker::init()
   if (!history)
     error->all(FLERR, "{}: pair_style granular keeps no contact history; its tangential models "
                       "must be /acoustic ones", command);
-  locate_walls();
+  locate_walls(with_regions);
 }
 
 /* ----------------------------------------------------------------------
@@ -146,11 +147,17 @@ void GranularContactWalker::init()
    other walls are free surfaces of the network
 ------------------------------------------------------------------------- */
 
-void GranularContactWalker::locate_walls()
+void GranularContactWalker::locate_walls(bool with_regions)
 {
   planes.clear();
   for (auto *fix : modify->get_fix_list()) {
     if (utils::strmatch(fix->style, "^wall/gran/region$")) {
+      if (!with_regions) {
+        error->warning(FLERR, "{}: the contacts with fix {} (wall/gran/region) are not in the "
+                              "vibration network (region_walls no): the wall is a free surface",
+                       command, fix->id);
+        continue;
+      }
       check_model(dynamic_cast<FixWallGran *>(fix)->model,
                   fmt::format("the contacts with fix {}", fix->id), false);
       planes.push_back({fix->id, 0, -1, 0.0, true});
@@ -238,7 +245,7 @@ void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int 
   contacts.clear();
   // pair granular as it is now (it may have been defined again since init())
   auto *current = dynamic_cast<PairGranular *>(force->pair_match("granular", 1));
-  if (!pair || current != pair) init();
+  if (!pair || current != pair) init(region_walls);
   if (!neighbor_history_ready())
     error->all(FLERR, "{}: pair granular has no neighbor list yet (a new pair style since the "
                       "last run); use 'run 0' first", command);

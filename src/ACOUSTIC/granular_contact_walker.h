@@ -76,8 +76,10 @@ class GranularContactWalker : protected Pointers {
   GranularContactWalker(class LAMMPS *, const std::string &command);
 
   // find pair granular and its history, check that every model can be
-  // linearised and has an /acoustic tangential model; call from init()
-  void init();
+  // linearised and has an /acoustic tangential model; call from init().
+  // with_regions: the walls of fix wall/gran/region are walls of the network
+  // (otherwise free surfaces, with a WARNING)
+  void init(bool with_regions);
 
   // the touching contacts of owned atoms with both atoms in groupbit, then
   // the contacts of owned atoms in groupbit with the wall planes; a contact
@@ -112,11 +114,12 @@ class GranularContactWalker : protected Pointers {
   // the planes; their fixes are looked up by ID when used (a fix may be
   // deleted between runs)
   std::vector<WallPlane> planes;
+  bool region_walls = true;    // the argument of the last init()
 
   void check_model(Granular_NS::GranularModel *model, const std::string &where,
                    bool needs_factor);
   void locate();    // pair granular and its history fix, nullptr if absent
-  void locate_walls();
+  void locate_walls(bool with_regions);
   bool neighbor_history_ready() const;    // collective
   void collect_pair(std::vector<GranularContact> &contacts, int groupbit, class CollectiveError &errors);
   void collect_region_wall(std::vector<GranularContact> &contacts, int groupbit, int wall,

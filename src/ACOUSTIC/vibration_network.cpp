@@ -110,6 +110,11 @@ int VibrationNetworkSettings::parse(int iarg, int narg, char **arg, const std::s
     }
     return 2;
   }
+  if (key == "region_walls") {
+    need(1);
+    region_walls = utils::logical(FLERR, arg[iarg + 1], false, lmp) == 1;
+    return 2;
+  }
   if (key == "damping" && allow_damping) {
     need(1);
     damping_ratio = finite_number(arg[iarg + 1], command, "damping ratio", lmp);
@@ -136,7 +141,7 @@ VibrationNetwork::~VibrationNetwork() = default;
 
 void VibrationNetwork::init()
 {
-  walker.init();
+  walker.init(settings.region_walls);
 }
 
 void VibrationNetwork::add_state_fix(const std::string &owner_id, const std::string &group_name)

@@ -42,6 +42,7 @@ struct VibrationNetworkSettings {
   double ratio = -1.0;    // k_t / k_n; < 0: pair's own k_t (pair), 2/7 (hertz)
   Acoustic::ContactModel model = Acoustic::ContactModel::Normal;
   double damping_ratio = 0.0;
+  bool region_walls = true;    // the walls of fix wall/gran/region are in the network
 
   // parse the network keyword at arg[iarg]; returns the number of words used,
   // 0 if arg[iarg] is not a network keyword; errors name `command`

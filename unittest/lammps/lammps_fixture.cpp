@@ -89,7 +89,7 @@ std::map<ContactKey, double> broadcast_from_rank0(const std::map<ContactKey, dou
 std::vector<LAMMPS_NS::GranularContact> granular_contacts(LammpsInstance &L)
 {
   LAMMPS_NS::GranularContactWalker walker(L.lmp, "test");
-  walker.init();
+  walker.init(true);    // with the walls of fix wall/gran/region
   std::vector<LAMMPS_NS::GranularContact> contacts;
   LAMMPS_NS::CollectiveError errors(L.lmp);
   walker.collect(contacts, 1, errors);    // group all

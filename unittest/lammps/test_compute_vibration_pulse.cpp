@@ -225,6 +225,33 @@ TEST(WallsInTheNetwork, RegionWallIsAWallOfTheNetwork)
   EXPECT_GT(*std::max_element(amplitudes[0].begin(), amplitudes[0].end()), 1e-3);
   for (int t = 1; t <= n; t++)
     EXPECT_NEAR(amplitudes[0][t], amplitudes[1][t], 1e-12 * amplitudes[0][t]) << "atom " << t;
+
+  // the modes: a region wall clamps the chain as the plane does; with
+  // region_walls no it is a free end (a lower first mode)
+  std::vector<double> frequencies[3];
+  const char *decks[3] = {"plane", "region", "region_walls no"};
+  for (int c = 0; c < 3; c++) {
+    LammpsInstance M;
+    M.commands(c == 0 ? chain_deck(n, m, k) : chain_with_region_wall(n, m, k, "top"));
+    M.commands(std::string("compute modes all vibration/modes") + (c == 2 ? " region_walls no" : "") +
+               "\nthermo_style custom step c_modes[1]\nrun 0\n");
+    auto *modes = compute_of(M, "modes");
+    modes->compute_vector();
+    frequencies[c].assign(modes->vector, modes->vector + modes->size_vector);
+  }
+  ASSERT_EQ(frequencies[0].size(), frequencies[1].size());
+  for (std::size_t j = 0; j < frequencies[0].size(); j++)
+    EXPECT_NEAR(frequencies[0][j], frequencies[1][j], 1e-9 * frequencies[0].back()) << decks[1] << " mode " << j;
+  double lowest[3];
+  for (int c = 0; c < 3; c++) {
+    lowest[c] = 0.0;
+    for (double f : frequencies[c])
+      if (f > 1e-6 * frequencies[c].back()) {
+        lowest[c] = f;
+        break;
+      }
+  }
+  EXPECT_LT(lowest[2], 0.7 * lowest[0]) << "a free end: the lowest mode of the chain drops";
 }
 
 TEST(PulseThroughLammps, IntegrateAgreesWithModes)

@@ -125,6 +125,12 @@ BAD_INPUTS = [
      "are at the same position: their contact has no normal"),
     # compute vibration/modes
     ("compute_unknown_keyword", COMPUTE + " loudness 3", "unknown keyword loudness"),
+    ("compute_region_walls_not_boolean", COMPUTE + " region_walls maybe", "Expected boolean parameter"),
+    ("fix_region_source_without_direction",
+     "region lid plane 0 -0.45 0 0 1 0 units box\n"
+     "fix lid all wall/gran/region granular hooke 1e4 0 tangential linear_history/acoustic 8e3 0 0.5 "
+     "region lid\nfix ac all acoustic/mindlin 10 frequency 0.5 amplitude 1e-3 source wall lid\nrun 0",
+     "give the direction of its drive"),
     ("compute_bad_method", COMPUTE + " method magic", "magic"),
     ("compute_nmodes_without_lanczos", COMPUTE + " nmodes 4", "nmodes applies to method lanczos only"),
     ("compute_zero_nmodes", COMPUTE + " method lanczos nmodes 0", "nmodes must be > 0"),
