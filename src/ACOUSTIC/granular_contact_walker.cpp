@@ -388,6 +388,35 @@ bool GranularContactWalker::reset_factors_between_runs(int groupbit)
 }
 
 /* ----------------------------------------------------------------------
+   the touching contact of owned atom i with a wall, whose geometry and
+   history the model holds: linearised and added, or reported when its
+   normal model gives a non-finite force or stiffness
+------------------------------------------------------------------------- */
+
+void GranularContactWalker::add_wall_contact(GranularModel *model, int i, int wall,
+                                             std::vector<GranularContact> &contacts,
+                                             CollectiveError &errors)
+{
+  GranularContact c;
+  c.i = i;
+  c.j = -1;
+  c.wall = wall;
+  c.owned = true;
+  c.radi = atom->radius[i];
+  c.radj = 0.0;    // a rigid wall
+  linearise(model, c);
+  if (!(std::isfinite(c.fn) && std::isfinite(c.fncrit) && std::isfinite(c.kn) &&
+        std::isfinite(c.kt))) {
+    errors.report(fmt::format("{}: contact of atom {} with fix {}: its normal model {} gives "
+                              "F_n = {}, k_n = {}, k_t = {}; check its coefficients", command,
+                              atom->tag[i], planes[wall].fix_id, model->normal_model->name, c.fn,
+                              c.kn, c.kt));
+    return;
+  }
+  contacts.push_back(c);
+}
+
+/* ----------------------------------------------------------------------
    contacts of owned atoms with the wall planes, as fix wall/gran finds them:
    each atom of the wall's group touches at most the nearer of its planes
 ------------------------------------------------------------------------- */
@@ -435,23 +464,7 @@ void GranularContactWalker::collect_walls(std::vector<GranularContact> &contacts
                                   "contact has no normal", command, tag[i], plane.fix_id));
         continue;
       }
-      GranularContact c;
-      c.i = i;
-      c.j = -1;
-      c.wall = static_cast<int>(p);
-      c.owned = true;
-      c.radi = radius[i];
-      c.radj = 0.0;
-      linearise(model, c);
-      if (!(std::isfinite(c.fn) && std::isfinite(c.fncrit) && std::isfinite(c.kn) &&
-            std::isfinite(c.kt))) {
-        errors.report(fmt::format("{}: contact of atom {} with fix {}: its normal model {} gives "
-                                  "F_n = {}, k_n = {}, k_t = {}; check its coefficients", command,
-                                  tag[i], plane.fix_id, model->normal_model->name, c.fn, c.kn,
-                                  c.kt));
-        continue;
-      }
-      contacts.push_back(c);
+      add_wall_contact(model, i, static_cast<int>(p), contacts, errors);
     }
   }
 }
@@ -515,22 +528,7 @@ void GranularContactWalker::collect_region_wall(std::vector<GranularContact> &co
                                   "fix {}: the contact has no normal", command, tag[i], fix_id));
         continue;
       }
-      GranularContact c;
-      c.i = i;
-      c.j = -1;
-      c.wall = wall;
-      c.owned = true;
-      c.radi = radius[i];
-      c.radj = 0.0;
-      linearise(model, c);
-      if (!(std::isfinite(c.fn) && std::isfinite(c.fncrit) && std::isfinite(c.kn) &&
-            std::isfinite(c.kt))) {
-        errors.report(fmt::format("{}: contact of atom {} with fix {}: its normal model {} gives "
-                                  "F_n = {}, k_n = {}, k_t = {}; check its coefficients", command,
-                                  tag[i], fix_id, model->normal_model->name, c.fn, c.kn, c.kt));
-        continue;
-      }
-      contacts.push_back(c);
+      add_wall_contact(model, i, wall, contacts, errors);
     }
   }
 }

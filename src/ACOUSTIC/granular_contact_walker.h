@@ -122,6 +122,8 @@ class GranularContactWalker : protected Pointers {
   void locate_walls(bool with_regions);
   bool neighbor_history_ready() const;    // collective
   void collect_pair(std::vector<GranularContact> &contacts, int groupbit, class CollectiveError &errors);
+  void add_wall_contact(Granular_NS::GranularModel *model, int i, int wall,
+                        std::vector<GranularContact> &contacts, class CollectiveError &errors);
   void collect_region_wall(std::vector<GranularContact> &contacts, int groupbit, int wall,
                            class CollectiveError &errors);
   void collect_walls(std::vector<GranularContact> &contacts, int groupbit,
