@@ -27,7 +27,7 @@
 #             ordering in 3D) and with its own ordering, block low-rank
 #             factors, MUMPS on both ranks from distributed input; and the
 #             largest difference of their friction factors from those of
-#             auto (tools/factors_diff.py)
+#             auto (bench/factors_diff.py)
 # The random layers are poured once (a few minutes for 32 000 grains, about
 # 35 for 100 000) and kept in ACOUSTIC_BENCH_CACHE (default
 # /var/cache/acoustic/bench).  Variables: ACOUSTIC_BENCH_FREQUENCY (Hz, 3D
@@ -35,7 +35,7 @@
 # 20 kHz).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-build=${1:-$here/../../build}
+build=$(cd "${1:-$here/../../build}" && pwd)
 shift || true
 lmp=$build/lammps/lmp
 sets=("$@")
