@@ -23,10 +23,14 @@
 
 #include "compute_vibration_modes.h"
 
+#include "citations_acoustic.h"
+#include "citeme.h"
+
 #include "acoustic_contact_network.h"
 #include "acoustic_dynamical_matrix.h"
 #include "acoustic_frequency_histogram.h"
 #include "acoustic_solver_error.h"
+#include "command_arguments.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -51,108 +55,80 @@ ComputeVibrationModes::ComputeVibrationModes(LAMMPS *lmp, int narg, char **arg) 
     Compute(lmp, narg, arg), method(Acoustic::ModeMethod::Dense), fixed_groupbit(0), nmodes(10),
     nbins(0), fmin(0.0), fmax(0.0), selected_mode(0), ndof(0), solved_step(-1),
     solved_with_shapes(false), nzero(0.0), histogram(nullptr), mode_rows(nullptr),
-    nmode_rows_max(0), shape_values(nullptr), shape_atom(nullptr), nmax(0)
+    nmode_rows_max(0), shape_atom(nullptr), nmax(0)
 {
+  if (lmp->citeme) lmp->citeme->add(AcousticCitations::two_time_scale_model);
+  if (lmp->citeme) lmp->citeme->add(AcousticCitations::confined_wave_propagation);
   bool nmodes_set = false, kpm_set = false;
-  int iarg = 3;
-  while (iarg < narg) {
-    const int used = settings.parse(iarg, narg, arg, CMD, lmp, false);
-    if (used > 0) {
-      iarg += used;
-      continue;
-    }
-    const std::string key = arg[iarg];
-    auto need = [&](int n) {
-      if (iarg + n >= narg)
-        error->all(FLERR, "Illegal {} command: keyword {} needs {} value(s)", CMD, key, n);
-    };
-    if (key == "fixed") {
-      need(1);
-      fixed_group = arg[iarg + 1];
-      if (group->find(fixed_group) < 0)
-        error->all(FLERR, "Illegal {} command: fixed group {} does not exist; define it with the "
-                          "group command first", CMD, fixed_group);
-      iarg += 2;
-    } else if (key == "method") {
-      need(1);
+  CommandArguments args(lmp, CMD, narg, arg, 3);
+  while (args.more()) {
+    if (settings.parse(args, false)) continue;
+    if (args.take("fixed", 1)) {
+      fixed_group = args.group_name(1);
+    } else if (args.take("method", 1)) {
       try {
-        method = Acoustic::mode_method_from_name(arg[iarg + 1]);
+        method = Acoustic::mode_method_from_name(args.word(1));
       } catch (Acoustic::SolverError &e) {
-        error->all(FLERR, "Illegal {} command: {}", CMD, e.what());
+        args.reject(FLERR, 1, "{}", e.what());
       }
-      iarg += 2;
-    } else if (key == "nmodes") {
-      need(1);
-      nmodes = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (nmodes <= 0)
-        error->all(FLERR, "Illegal {} command: nmodes must be > 0, got {}", CMD, nmodes);
+    } else if (args.take("nmodes", 1)) {
+      nmodes = args.integer(1);
+      if (nmodes <= 0) args.reject(FLERR, 1, "nmodes must be > 0, got {}", nmodes);
       nmodes_set = true;
-      iarg += 2;
-    } else if (key == "bins") {
-      need(3);
-      nbins = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      fmin = VibrationNetworkSettings::finite_number(arg[iarg + 2], CMD, "bins fmin", lmp);
-      fmax = VibrationNetworkSettings::finite_number(arg[iarg + 3], CMD, "bins fmax", lmp);
+    } else if (args.take("bins", 3)) {
+      nbins = args.integer(1);
+      fmin = args.number(2);
+      fmax = args.number(3);
       try {
         Acoustic::check_histogram_range(nbins, fmin, fmax);
       } catch (Acoustic::SolverError &e) {
-        error->all(FLERR, "Illegal {} command: bins Nb fmin fmax: {}", CMD, e.what());
+        args.reject(FLERR, 0, "bins Nb fmin fmax: {}", e.what());
       }
-      iarg += 4;
-    } else if (key == "mode") {
-      need(1);
-      selected_mode = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+    } else if (args.take("mode", 1)) {
+      selected_mode = args.integer(1);
       if (selected_mode < 1)
-        error->all(FLERR, "Illegal {} command: mode must be >= 1 (modes are numbered from 1 "
-                          "upwards in frequency), got {}", CMD, selected_mode);
-      iarg += 2;
-    } else if (key == "moments") {
-      need(1);
-      kpm.moments = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (kpm.moments < 2)
-        error->all(FLERR, "Illegal {} command: moments must be >= 2, got {}", CMD, kpm.moments);
+        args.reject(FLERR, 1, "mode must be >= 1 (modes are numbered from 1 upwards in "
+                              "frequency), got {}", selected_mode);
+    } else if (args.take("moments", 1)) {
+      kpm.moments = args.integer(1);
+      if (kpm.moments < 2) args.reject(FLERR, 1, "moments must be >= 2, got {}", kpm.moments);
       kpm_set = true;
-      iarg += 2;
-    } else if (key == "vectors") {
-      need(1);
-      kpm.random_vectors = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+    } else if (args.take("vectors", 1)) {
+      kpm.random_vectors = args.integer(1);
       if (kpm.random_vectors < 2)
-        error->all(FLERR, "Illegal {} command: vectors must be >= 2 (the error estimate needs "
-                          "two), got {}", CMD, kpm.random_vectors);
+        args.reject(FLERR, 1, "vectors must be >= 2 (the error estimate needs two), got {}",
+                    kpm.random_vectors);
       kpm_set = true;
-      iarg += 2;
-    } else if (key == "seed") {
-      need(1);
-      const bigint seed = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (seed <= 0) error->all(FLERR, "Illegal {} command: seed must be > 0, got {}", CMD, seed);
+    } else if (args.take("seed", 1)) {
+      const bigint seed = args.big_integer(1);
+      if (seed <= 0) args.reject(FLERR, 1, "seed must be > 0, got {}", seed);
       kpm.seed = static_cast<std::uint64_t>(seed);
       kpm_set = true;
-      iarg += 2;
-    } else if (key == "damping") {
-      error->all(FLERR, "Illegal {} command: keyword damping does not apply: the modes are those "
-                        "of the undamped network (use damping with fix acoustic/mindlin)", CMD);
+    } else if (args.take("damping", 1)) {
+      args.reject(FLERR, 0, "keyword damping does not apply: the modes are those of the undamped "
+                            "network (use damping with fix acoustic/mindlin)");
     } else {
-      error->all(FLERR, "Illegal {} command: unknown keyword {}; keywords are stiffness, "
-                        "kappa_scale, ratio, model, fixed, method, nmodes, bins, mode, moments, "
-                        "vectors, seed", CMD, key);
+      args.unknown("stiffness, kappa_scale, ratio, model, region_walls, fixed, method, nmodes, "
+                   "bins, mode, moments, vectors, seed");
     }
+    args.next();
   }
 
   // keywords that only one method uses
   const bool kpm_method = (method == Acoustic::ModeMethod::Kpm);
   if (nmodes_set && method != Acoustic::ModeMethod::Lanczos)
-    error->all(FLERR, "Illegal {} command: nmodes applies to method lanczos only (dense computes "
+    error->all(FLERR, "{}: nmodes applies to method lanczos only (dense computes "
                       "every mode); add method lanczos or remove nmodes", CMD);
   if (kpm_set && !kpm_method)
-    error->all(FLERR, "Illegal {} command: moments, vectors and seed apply to method kpm only", CMD);
+    error->all(FLERR, "{}: moments, vectors and seed apply to method kpm only", CMD);
   if (kpm_method && nbins == 0)
-    error->all(FLERR, "Illegal {} command: method kpm computes the density of states only; "
+    error->all(FLERR, "{}: method kpm computes the density of states only; "
                       "give its range with bins Nb fmin fmax", CMD);
   if (kpm_method && selected_mode > 0)
-    error->all(FLERR, "Illegal {} command: method kpm computes no individual mode; use method "
+    error->all(FLERR, "{}: method kpm computes no individual mode; use method "
                       "dense or lanczos with keyword mode", CMD);
   if (method == Acoustic::ModeMethod::Lanczos && selected_mode > nmodes)
-    error->all(FLERR, "Illegal {} command: mode {} is out of range: method lanczos computes "
+    error->all(FLERR, "{}: mode {} is out of range: method lanczos computes "
                       "nmodes = {} modes; raise nmodes to at least {}", CMD, selected_mode, nmodes,
                selected_mode);
 
@@ -198,7 +174,6 @@ ComputeVibrationModes::~ComputeVibrationModes()
   if (network) network->delete_state_fix();
   memory->destroy(histogram);
   memory->destroy(mode_rows);
-  memory->destroy(shape_values);
   memory->destroy(shape_atom);
 }
 
@@ -414,33 +389,20 @@ void ComputeVibrationModes::compute_peratom()
 
   if (atom->nmax > nmax) {
     nmax = atom->nmax;
-    memory->destroy(shape_values);
     memory->destroy(shape_atom);
-    memory->create(shape_values, nmax, 2 * ndof, "vibration/modes:shape_values");
     memory->create(shape_atom, nmax, size_peratom_cols, "vibration/modes:shape_atom");
     array_atom = shape_atom;
   }
-  Eigen::VectorXcd values;
-  if (comm->me == 0) values = selected_shape.cast<std::complex<double>>();
-  network->scatter(values, shape_values, groupbit);
-
-  const int dim = domain->dimension;
-  for (int i = 0; i < atom->nlocal; i++) {
-    for (int k = 0; k < size_peratom_cols; k++) shape_atom[i][k] = 0.0;
-    // DOFs of a grain: dim translations, then its rotations (1 in 2D, 3 in 3D)
-    for (int k = 0; k < dim; k++) shape_atom[i][k] = shape_values[i][2 * k];
-    if (ndof == dim) continue;
-    if (dim == 2) shape_atom[i][5] = shape_values[i][2 * dim];
-    else
-      for (int k = 0; k < 3; k++) shape_atom[i][3 + k] = shape_values[i][2 * (dim + k)];
-  }
+  Eigen::VectorXd values;
+  if (comm->me == 0) values = selected_shape;
+  network->scatter_displacements(values, shape_atom, size_peratom_cols, groupbit);
 }
 
 /* ---------------------------------------------------------------------- */
 
 double ComputeVibrationModes::memory_usage()
 {
-  double bytes = static_cast<double>(nmax) * 2 * ndof * sizeof(double);
+  double bytes = 0.0;
   if (peratom_flag) bytes += static_cast<double>(nmax) * size_peratom_cols * sizeof(double);
   bytes += static_cast<double>(frequencies.size() + participation.size()) * sizeof(double);
   bytes += static_cast<double>(nmode_rows_max) * MODE_COLUMNS * sizeof(double);

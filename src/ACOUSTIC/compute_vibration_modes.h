@@ -69,7 +69,6 @@ class ComputeVibrationModes : public Compute {
   double **histogram;        // global array, nbins x 3
   double **mode_rows;        // local array, rank 0: (index, f, PR) per mode
   int nmode_rows_max;
-  double **shape_values;     // per-atom (re, im) of each DOF, from VibrationNetwork::scatter
   double **shape_atom;       // per-atom output
   int nmax;
 

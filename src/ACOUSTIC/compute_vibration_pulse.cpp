@@ -23,7 +23,11 @@
 
 #include "compute_vibration_pulse.h"
 
+#include "citations_acoustic.h"
+#include "citeme.h"
+
 #include "acoustic_solver_error.h"
+#include "command_arguments.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -50,118 +54,81 @@ static constexpr int AUTO_INTEGRATE_DOFS = 10000;    // method auto: integrate a
 ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), fixed_groupbit(0), direction_given(false), method_given(false), ndof(0),
     solved_step(-1),
-    signal(nullptr), snapshot_values(nullptr), snapshot_atom(nullptr), nmax(0)
+    signal(nullptr), snapshot_atom(nullptr), nmax(0)
 {
-  int iarg = parse_endpoint(3, narg, arg, "source", source);
-  iarg = parse_endpoint(iarg, narg, arg, "detector", detector);
+  if (lmp->citeme) lmp->citeme->add(AcousticCitations::confined_wave_propagation);
+  CommandArguments args(lmp, CMD, narg, arg, 3);
+  parse_endpoint(args, "source", source);
+  parse_endpoint(args, "detector", detector);
 
   const int dim = domain->dimension;
   direction[0] = direction[1] = direction[2] = 0.0;
   direction[dim == 3 ? 2 : 1] = 1.0;
   options.duration = -1.0;
-  while (iarg < narg) {
-    const int used = settings.parse(iarg, narg, arg, CMD, lmp, true);
-    if (used > 0) {
-      iarg += used;
-      continue;
-    }
-    const std::string key = arg[iarg];
-    auto need = [&](int n) {
-      if (iarg + n >= narg)
-        error->all(FLERR, "Illegal {} command: keyword {} needs {} value(s)", CMD, key, n);
-    };
-    auto number = [&](int k, const char *what) {
-      return VibrationNetworkSettings::finite_number(arg[iarg + k], CMD, what, lmp);
-    };
-    if (key == "direction") {
-      need(3);
-      direction[0] = number(1, "direction dx");
-      direction[1] = number(2, "direction dy");
-      direction[2] = number(3, "direction dz");
+  while (args.more()) {
+    if (settings.parse(args, true)) continue;
+    if (args.take("direction", 3)) {
+      for (int k = 0; k < 3; k++) direction[k] = args.number(1 + k);
       direction_given = true;
-      iarg += 4;
-    } else if (key == "initial") {
-      need(1);
+    } else if (args.take("initial", 1)) {
       try {
-        options.initial = Acoustic::pulse_initial_from_name(arg[iarg + 1]);
+        options.initial = Acoustic::pulse_initial_from_name(args.word(1));
       } catch (Acoustic::SolverError &e) {
-        error->all(FLERR, "Illegal {} command: {}", CMD, e.what());
+        args.reject(FLERR, 1, "{}", e.what());
       }
-      iarg += 2;
-    } else if (key == "method") {
-      need(1);
-      if (strcmp(arg[iarg + 1], "auto") != 0) {
+    } else if (args.take("method", 1)) {
+      if (strcmp(args.word(1), "auto") != 0) {
         try {
-          options.method = Acoustic::pulse_method_from_name(arg[iarg + 1]);
+          options.method = Acoustic::pulse_method_from_name(args.word(1));
         } catch (Acoustic::SolverError &e) {
-          error->all(FLERR, "Illegal {} command: {} (or auto)", CMD, e.what());
+          args.reject(FLERR, 1, "{} (or auto)", e.what());
         }
         method_given = true;
       }
-      iarg += 2;
-    } else if (key == "duration") {
-      need(1);
-      options.duration = number(1, "duration");
+    } else if (args.take("duration", 1)) {
+      options.duration = args.number(1);
       if (options.duration <= 0.0)
-        error->all(FLERR, "Illegal {} command: duration must be > 0 (time units), got {}", CMD,
-                   options.duration);
-      iarg += 2;
-    } else if (key == "samples") {
-      need(1);
-      options.samples = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+        args.reject(FLERR, 1, "duration must be > 0 (time units), got {}", options.duration);
+    } else if (args.take("samples", 1)) {
+      options.samples = args.integer(1);
       if (options.samples < 2 || options.samples > 10000000)
-        error->all(FLERR, "Illegal {} command: samples must be in [2, 1e7], got {}", CMD,
-                   options.samples);
-      iarg += 2;
-    } else if (key == "timestep") {
-      need(1);
-      options.time_step = number(1, "timestep");
-      if (options.time_step <= 0.0)
-        error->all(FLERR, "Illegal {} command: timestep must be > 0, got {}", CMD,
-                   options.time_step);
-      iarg += 2;
-    } else if (key == "max_steps") {
-      need(1);
-      const double steps = number(1, "max_steps");
+        args.reject(FLERR, 1, "samples must be in [2, 1e7], got {}", options.samples);
+    } else if (args.take("timestep", 1)) {
+      options.time_step = args.number(1);
+      if (options.time_step <= 0.0) args.reject(FLERR, 1, "timestep must be > 0, got {}", options.time_step);
+    } else if (args.take("max_steps", 1)) {
+      const double steps = args.number(1);
       if (!(steps >= 1.0 && steps <= 9e18))
-        error->all(FLERR, "Illegal {} command: max_steps must be in [1, 9e18], got {}", CMD, arg[iarg + 1]);
+        args.reject(FLERR, 1, "max_steps must be in [1, 9e18], got {}", args.word(1));
       options.max_steps = static_cast<long>(steps);
-      iarg += 2;
-    } else if (key == "snapshot") {
-      need(1);
-      options.snapshot_time = number(1, "snapshot time");
+    } else if (args.take("snapshot", 1)) {
+      options.snapshot_time = args.number(1);
       if (options.snapshot_time < 0.0)
-        error->all(FLERR, "Illegal {} command: snapshot time must be >= 0, got {}", CMD,
-                   options.snapshot_time);
-      iarg += 2;
-    } else if (key == "fixed") {
-      need(1);
-      fixed_group = arg[iarg + 1];
-      if (group->find(fixed_group) < 0)
-        error->all(FLERR, "Illegal {} command: fixed group {} does not exist", CMD, fixed_group);
-      iarg += 2;
+        args.reject(FLERR, 1, "snapshot time must be >= 0, got {}", options.snapshot_time);
+    } else if (args.take("fixed", 1)) {
+      fixed_group = args.group_name(1);
     } else {
-      error->all(FLERR, "Illegal {} command: unknown keyword {}; keywords are direction, initial, "
-                        "method, duration, samples, timestep, max_steps, snapshot, fixed, stiffness, "
-                        "kappa_scale, ratio, model, damping", CMD, key);
+      args.unknown("direction, initial, method, duration, samples, timestep, max_steps, snapshot, "
+                   "fixed, stiffness, kappa_scale, ratio, model, damping, region_walls");
     }
+    args.next();
   }
   if (options.duration < 0.0)
-    error->all(FLERR, "Illegal {} command: give the time to follow the pulse with duration T", CMD);
+    error->all(FLERR, "{}: give the time to follow the pulse with duration T", CMD);
   if (options.snapshot_time > options.duration)
-    error->all(FLERR, "Illegal {} command: the snapshot time {} is after the duration {}", CMD,
+    error->all(FLERR, "{}: the snapshot time {} is after the duration {}", CMD,
                options.snapshot_time, options.duration);
   if (dim == 2 && direction[2] != 0.0)
-    error->all(FLERR, "Illegal {} command: in 2D the direction must lie in the xy plane", CMD);
+    error->all(FLERR, "{}: in 2D the direction must lie in the xy plane", CMD);
   const double largest = MAX(fabs(direction[0]), MAX(fabs(direction[1]), fabs(direction[2])));
   if (largest == 0.0)
-    error->all(FLERR, "Illegal {} command: direction must not be the zero vector", CMD);
+    error->all(FLERR, "{}: direction must not be the zero vector", CMD);
   for (double &d : direction) d /= largest;
   const double norm = sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
                            direction[2] * direction[2]);
   for (double &d : direction) d /= norm;
   if (method_given && options.method == Acoustic::PulseMethod::Modes && settings.damping_ratio > 0.0)
-    error->all(FLERR, "Illegal {} command: method modes needs an undamped network; use method "
+    error->all(FLERR, "{}: method modes needs an undamped network; use method "
                       "integrate with damping", CMD);
 
   ndof = Acoustic::dofs_per_grain(dim, settings.model);
@@ -196,7 +163,6 @@ ComputeVibrationPulse::~ComputeVibrationPulse()
 {
   if (network) network->delete_state_fix();
   memory->destroy(signal);
-  memory->destroy(snapshot_values);
   memory->destroy(snapshot_atom);
 }
 
@@ -204,28 +170,21 @@ ComputeVibrationPulse::~ComputeVibrationPulse()
    source|detector group-ID | wall fix-ID
 ------------------------------------------------------------------------- */
 
-int ComputeVibrationPulse::parse_endpoint(int iarg, int narg, char **arg, const char *word,
-                                          Endpoint &end)
+void ComputeVibrationPulse::parse_endpoint(CommandArguments &args, const char *word, Endpoint &end)
 {
-  if (iarg + 1 >= narg || strcmp(arg[iarg], word) != 0)
-    error->all(FLERR, "Illegal {} command: expected compute ID group-ID vibration/pulse source "
-                      "group-ID|wall fix-ID detector group-ID|wall fix-ID [keyword value ...], "
-                      "got '{}' where '{}' belongs", CMD, (iarg < narg) ? arg[iarg] : "", word);
-  if (strcmp(arg[iarg + 1], "wall") == 0) {
-    if (iarg + 2 >= narg)
-      error->all(FLERR, "Illegal {} command: {} wall needs the ID of a fix wall/gran or wall/gran/region", CMD, word);
-    end.wall_fix = arg[iarg + 2];
-    Fix *wall = modify->get_fix_by_id(end.wall_fix);
-    if (!wall || !(utils::strmatch(wall->style, "^wall/gran$") || utils::strmatch(wall->style, "^wall/gran/region$")))
-      error->all(FLERR, "Illegal {} command: {} wall {} is not a fix wall/gran or "
-                        "wall/gran/region", CMD, word, end.wall_fix);
-    return iarg + 3;
+  if (!args.more() || strcmp(args.keyword(), word) != 0)
+    error->all(FLERR, args.more() ? args.index() : Error::NOPOINTER, "{}: expected compute ID group-ID vibration/pulse source "
+                                    "group-ID|wall fix-ID detector group-ID|wall fix-ID [keyword "
+                                    "value ...], got '{}' where '{}' belongs", CMD,
+               args.more() ? args.keyword() : "", word);
+  args.expect(word, 1);
+  if (strcmp(args.word(1), "wall") == 0) {
+    args.expect(word, 2);
+    end.wall_fix = args.wall_fix(2);
+  } else {
+    end.group = args.group_name(1);
   }
-  end.group = arg[iarg + 1];
-  if (group->find(end.group) < 0)
-    error->all(FLERR, "Illegal {} command: {} group {} does not exist; define it with the group "
-                      "command first", CMD, word, end.group);
-  return iarg + 2;
+  args.next();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -409,18 +368,13 @@ void ComputeVibrationPulse::compute_peratom()
   solve();
   if (atom->nmax > nmax) {
     nmax = atom->nmax;
-    memory->destroy(snapshot_values);
     memory->destroy(snapshot_atom);
-    memory->create(snapshot_values, nmax, 2 * ndof, "vibration/pulse:snapshot_values");
     memory->create(snapshot_atom, nmax, size_peratom_cols, "vibration/pulse:snapshot_atom");
     array_atom = snapshot_atom;
   }
-  Eigen::VectorXcd values;
-  if (comm->me == 0) values = snapshot.cast<std::complex<double>>();
-  network->scatter(values, snapshot_values, groupbit);
-  const int dim = domain->dimension;
-  for (int i = 0; i < atom->nlocal; i++)
-    for (int k = 0; k < 3; k++) snapshot_atom[i][k] = (k < dim) ? snapshot_values[i][2 * k] : 0.0;
+  Eigen::VectorXd values;
+  if (comm->me == 0) values = snapshot;
+  network->scatter_displacements(values, snapshot_atom, size_peratom_cols, groupbit);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -428,7 +382,7 @@ void ComputeVibrationPulse::compute_peratom()
 double ComputeVibrationPulse::memory_usage()
 {
   double bytes = static_cast<double>(options.samples) * SIGNAL_COLUMNS * sizeof(double);
-  if (peratom_flag) bytes += static_cast<double>(nmax) * (2 * ndof + size_peratom_cols) * sizeof(double);
+  if (peratom_flag) bytes += static_cast<double>(nmax) * size_peratom_cols * sizeof(double);
   bytes += static_cast<double>(snapshot.size()) * sizeof(double);
   return bytes;
 }

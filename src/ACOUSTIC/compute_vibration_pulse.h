@@ -64,12 +64,11 @@ class ComputeVibrationPulse : public Compute {
   bigint solved_step;
   double info[NVECTOR];
   double **signal;             // global array: samples x (time, F_sig)
-  double **snapshot_values;    // per-atom (re, im) of each DOF, from VibrationNetwork::scatter
   double **snapshot_atom;      // per-atom output: displacement at the snapshot time
   int nmax;
   Eigen::VectorXd snapshot;    // rank 0
 
-  int parse_endpoint(int iarg, int narg, char **arg, const char *word, Endpoint &end);
+  void parse_endpoint(class CommandArguments &, const char *word, Endpoint &end);
   void init_endpoint(Endpoint &end, const char *word);
   void solve();
   std::string solve_on_rank0();

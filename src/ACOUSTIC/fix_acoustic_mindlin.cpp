@@ -25,9 +25,13 @@
 
 #include "fix_acoustic_mindlin.h"
 
+#include "citations_acoustic.h"
+#include "citeme.h"
+
 #include "acoustic_contact_network.h"
 #include "acoustic_solver_error.h"
 #include "collective_error.h"
+#include "command_arguments.h"
 #include "granular_contact_walker.h"
 #include "granular_state.h"
 
@@ -67,8 +71,9 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
     last_solution_valid(false), warned_idle_source(false), solved_network(0), unchanged_networks(0),
     comm_mode(COMM_AMPLITUDES), halo_width(0)
 {
+  if (lmp->citeme) lmp->citeme->add(AcousticCitations::two_time_scale_model);
   if (narg < 10)
-    error->all(FLERR, "Illegal {} command: expected fix ID group-ID acoustic/mindlin N "
+    error->all(FLERR, "{}: expected fix ID group-ID acoustic/mindlin N "
                       "frequency f amplitude U0 source group-ID [keyword value ...]", CMD);
 
   // the words after the fix ID, as given: a restart file written with other
@@ -81,50 +86,34 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
   settings_signature = signature.value();
 
   nevery = utils::inumeric(FLERR, arg[3], false, lmp);
-  if (nevery <= 0) error->all(FLERR, "Illegal {} command: N must be > 0, got {}", CMD, nevery);
-  auto expect = [&](int iarg, const char *word) {
-    if (strcmp(arg[iarg], word) != 0)
-      error->all(FLERR, "Illegal {} command: expected '{}' as argument {}, got '{}'", CMD, word,
-                 iarg + 1, arg[iarg]);
-  };
-  expect(4, "frequency");
-  frequency = VibrationNetworkSettings::finite_number(arg[5], CMD, "frequency", lmp);
-  if (frequency < 0.0)
-    error->all(FLERR, "Illegal {} command: frequency must be >= 0 (1/time units), got {}", CMD,
-               frequency);
-  expect(6, "amplitude");
-  amplitude = VibrationNetworkSettings::finite_number(arg[7], CMD, "amplitude", lmp);
-  if (amplitude < 0.0)
-    error->all(FLERR, "Illegal {} command: amplitude must be >= 0 (distance units), got {}", CMD,
-               amplitude);
-  expect(8, "source");
-  int iarg = 10;
-  if (strcmp(arg[9], "wall") == 0) {
-    if (narg < 11)
-      error->all(FLERR, "Illegal {} command: source wall needs the ID of a fix wall/gran or wall/gran/region", CMD);
-    source_wall_fix = arg[10];
-    Fix *wall = modify->get_fix_by_id(source_wall_fix);
-    if (!wall || !(utils::strmatch(wall->style, "^wall/gran$") || utils::strmatch(wall->style, "^wall/gran/region$")))
-      error->all(FLERR, "Illegal {} command: source wall {} is not a fix wall/gran or "
-                        "wall/gran/region; define the vibrating wall with one of them first",
-                 CMD, source_wall_fix);
-    iarg = 11;
+  if (nevery <= 0) error->all(FLERR, 3, "{}: N must be > 0, got {}", CMD, nevery);
+  CommandArguments args(lmp, CMD, narg, arg, 4);
+  args.expect("frequency", 1);
+  frequency = args.number(1);
+  if (frequency < 0.0) args.reject(FLERR, 1, "frequency must be >= 0 (1/time units), got {}", frequency);
+  args.next();
+  args.expect("amplitude", 1);
+  amplitude = args.number(1);
+  if (amplitude < 0.0) args.reject(FLERR, 1, "amplitude must be >= 0 (distance units), got {}", amplitude);
+  args.next();
+  args.expect("source", 1);
+  if (strcmp(args.word(1), "wall") == 0) {
+    args.expect("source", 2);
+    source_wall_fix = args.wall_fix(2);
   } else {
-    source_group = arg[9];
-    if (group->find(source_group) < 0)
-      error->all(FLERR, "Illegal {} command: source group {} does not exist; define it with the "
-                        "group command first", CMD, source_group);
+    source_group = args.group_name(1);
   }
+  args.next();
 
   const int dim = domain->dimension;
   direction[0] = direction[1] = direction[2] = 0.0;
   direction[dim == 3 ? 2 : 1] = 1.0;
-  parse_keywords(iarg, narg, arg);
+  parse_keywords(args);
   normalise_direction();
 
   damped = (settings.damping_ratio > 0.0);
   if (damped && solver_choice == Acoustic::LinearSolverChoice::Ldlt)
-    error->all(FLERR, "Illegal {} command: solver ldlt handles undamped (real symmetric) problems "
+    error->all(FLERR, "{}: solver ldlt handles undamped (real symmetric) problems "
                       "only; use solver lu or auto with damping", CMD);
 
   ndof = Acoustic::dofs_per_grain(dim, settings.model);
@@ -167,7 +156,7 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
       krylov.reset(new Acoustic::KrylovHelmholtzSolver(world, krylov_settings));
     } else if (solver_choice == Acoustic::LinearSolverChoice::Mumps) {
       if (mumps_settings.ordering == Acoustic::MumpsOrdering::Metis)
-        error->all(FLERR, "Illegal {} command: ordering metis needs the network on one rank; solver "
+        error->all(FLERR, "{}: ordering metis needs the network on one rank; solver "
                           "mumps orders with MUMPS's own choice: use solver auto for METIS", CMD);
       mumps.reset(new Acoustic::DistributedMumpsSolver(world, mumps_settings, 1e-6));
     } else {
@@ -218,116 +207,75 @@ FixAcousticMindlin::~FixAcousticMindlin()
 
 /* ---------------------------------------------------------------------- */
 
-void FixAcousticMindlin::parse_keywords(int iarg, int narg, char **arg)
+void FixAcousticMindlin::parse_keywords(CommandArguments &args)
 {
-  while (iarg < narg) {
-    const int used = settings.parse(iarg, narg, arg, CMD, lmp, true);
-    if (used > 0) {
-      iarg += used;
-      continue;
-    }
-    const std::string key = arg[iarg];
-    auto need = [&](int n) {
-      if (iarg + n >= narg)
-        error->all(FLERR, "Illegal {} command: keyword {} needs {} value(s)", CMD, key, n);
-    };
-    if (key == "direction") {
-      need(3);
-      const char *names[3] = {"direction dx", "direction dy", "direction dz"};
-      for (int k = 0; k < 3; k++)
-        direction[k] = VibrationNetworkSettings::finite_number(arg[iarg + 1 + k], CMD, names[k], lmp);
+  while (args.more()) {
+    if (settings.parse(args, true)) continue;
+    if (args.take("direction", 3)) {
+      for (int k = 0; k < 3; k++) direction[k] = args.number(1 + k);
       direction_given = true;
-      iarg += 4;
-    } else if (key == "mode") {
-      need(1);
-      if (strcmp(arg[iarg + 1], "all") == 0) source_mode = ALL;
-      else if (strcmp(arg[iarg + 1], "normal") == 0) source_mode = NORMAL;
-      else
-        error->all(FLERR, "Illegal {} command: mode must be 'all' or 'normal', got '{}'", CMD,
-                   arg[iarg + 1]);
-      iarg += 2;
-    } else if (key == "cmu") {
-      need(1);
-      law.cmu = VibrationNetworkSettings::finite_number(arg[iarg + 1], CMD, "cmu", lmp);
-      if (law.cmu < 0.0) error->all(FLERR, "Illegal {} command: cmu must be >= 0, got {}", CMD, law.cmu);
-      iarg += 2;
-    } else if (key == "mu_min") {
-      need(1);
-      law.mu_min = VibrationNetworkSettings::finite_number(arg[iarg + 1], CMD, "mu_min", lmp);
+    } else if (args.take("mode", 1)) {
+      if (strcmp(args.word(1), "all") == 0) source_mode = ALL;
+      else if (strcmp(args.word(1), "normal") == 0) source_mode = NORMAL;
+      else args.reject(FLERR, 1, "mode must be 'all' or 'normal', got '{}'", args.word(1));
+    } else if (args.take("cmu", 1)) {
+      law.cmu = args.number(1);
+      if (law.cmu < 0.0) args.reject(FLERR, 1, "cmu must be >= 0, got {}", law.cmu);
+    } else if (args.take("mu_min", 1)) {
+      law.mu_min = args.number(1);
       if (law.mu_min < 0.0 || law.mu_min > 1.0)
-        error->all(FLERR, "Illegal {} command: mu_min must be in [0, 1], got {}", CMD, law.mu_min);
-      iarg += 2;
-    } else if (key == "reuse") {
-      need(1);
-      reuse = utils::logical(FLERR, arg[iarg + 1], false, lmp) != 0;
-      iarg += 2;
-    } else if (key == "solver") {
-      need(1);
+        args.reject(FLERR, 1, "mu_min must be in [0, 1], got {}", law.mu_min);
+    } else if (args.take("reuse", 1)) {
+      reuse = args.logical(1);
+    } else if (args.take("solver", 1)) {
       try {
-        solver_choice = Acoustic::linear_solver_from_name(arg[iarg + 1]);
+        solver_choice = Acoustic::linear_solver_from_name(args.word(1));
       } catch (Acoustic::SolverError &e) {
-        error->all(FLERR, "Illegal {} command: {}", CMD, e.what());
+        args.reject(FLERR, 1, "{}", e.what());
       }
       if (solver_choice == Acoustic::LinearSolverChoice::Iterative &&
           !Acoustic::KrylovHelmholtzSolver::available())
-        error->all(FLERR, "Illegal {} command: solver iterative needs an ACOUSTIC package built "
-                          "with PETSc (complex scalars; Debian: libpetsc-complex-dev); use solver "
-                          "auto, or rebuild LAMMPS with PETSc", CMD);
-      iarg += 2;
-    } else if (key == "tolerance") {
-      need(1);
-      krylov_settings.tolerance = VibrationNetworkSettings::finite_number(arg[iarg + 1], CMD, "tolerance", lmp);
+        args.reject(FLERR, 1, "solver iterative needs an ACOUSTIC package built with PETSc "
+                              "(complex scalars; Debian: libpetsc-complex-dev); use solver auto, "
+                              "or rebuild LAMMPS with PETSc");
+    } else if (args.take("tolerance", 1)) {
+      krylov_settings.tolerance = args.number(1);
       if (!(krylov_settings.tolerance > 0.0 && krylov_settings.tolerance < 1.0))
-        error->all(FLERR, "Illegal {} command: tolerance must be in (0, 1), got {}", CMD,
-                   krylov_settings.tolerance);
-      iarg += 2;
-    } else if (key == "max_iterations") {
-      need(1);
-      krylov_settings.max_iterations = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+        args.reject(FLERR, 1, "tolerance must be in (0, 1), got {}", krylov_settings.tolerance);
+    } else if (args.take("max_iterations", 1)) {
+      krylov_settings.max_iterations = args.integer(1);
       if (krylov_settings.max_iterations < 1)
-        error->all(FLERR, "Illegal {} command: max_iterations must be >= 1, got {}", CMD,
-                   krylov_settings.max_iterations);
-      iarg += 2;
-    } else if (key == "ordering") {
-      need(1);
-      const std::string name = arg[iarg + 1];
+        args.reject(FLERR, 1, "max_iterations must be >= 1, got {}", krylov_settings.max_iterations);
+    } else if (args.take("ordering", 1)) {
+      const std::string name = args.word(1);
       if (name == "mumps") mumps_settings.ordering = Acoustic::MumpsOrdering::Auto;
       else if (name == "metis") mumps_settings.ordering = Acoustic::MumpsOrdering::Metis;
-      else
-        error->all(FLERR, "Illegal {} command: ordering must be 'mumps' or 'metis', got '{}'", CMD, name);
+      else args.reject(FLERR, 1, "ordering must be 'mumps' or 'metis', got '{}'", name);
       if (mumps_settings.ordering == Acoustic::MumpsOrdering::Metis && !Acoustic::metis_available())
-        error->all(FLERR, "Illegal {} command: ordering metis needs an ACOUSTIC package built with METIS "
-                          "(Debian: libmetis-dev); use ordering mumps", CMD);
+        args.reject(FLERR, 1, "ordering metis needs an ACOUSTIC package built with METIS "
+                              "(Debian: libmetis-dev); use ordering mumps");
       ordering_given = true;
-      iarg += 2;
-    } else if (key == "low_rank") {
-      need(1);
-      const double tolerance = VibrationNetworkSettings::finite_number(arg[iarg + 1], CMD, "low_rank", lmp);
+    } else if (args.take("low_rank", 1)) {
+      const double tolerance = args.number(1);
       if (!(tolerance >= 0.0 && tolerance < 1.0))
-        error->all(FLERR, "Illegal {} command: low_rank tolerance must be in [0, 1) (0: full rank), got {}",
-                   CMD, tolerance);
+        args.reject(FLERR, 1, "low_rank tolerance must be in [0, 1) (0: full rank), got {}", tolerance);
       mumps_settings.low_rank = tolerance > 0.0;
       mumps_settings.low_rank_tolerance = tolerance > 0.0 ? tolerance : mumps_settings.low_rank_tolerance;
-      iarg += 2;
-    } else if (key == "shift") {
-      need(1);
-      krylov_settings.shift = VibrationNetworkSettings::finite_number(arg[iarg + 1], CMD, "shift", lmp);
-      if (krylov_settings.shift < 0.0)
-        error->all(FLERR, "Illegal {} command: shift must be >= 0, got {}", CMD, krylov_settings.shift);
-      iarg += 2;
-    } else if (key == "preconditioner") {
-      need(1);
+    } else if (args.take("shift", 1)) {
+      krylov_settings.shift = args.number(1);
+      if (krylov_settings.shift < 0.0) args.reject(FLERR, 1, "shift must be >= 0, got {}", krylov_settings.shift);
+    } else if (args.take("preconditioner", 1)) {
       try {
-        krylov_settings.preconditioner = Acoustic::krylov_preconditioner_from_name(arg[iarg + 1]);
+        krylov_settings.preconditioner = Acoustic::krylov_preconditioner_from_name(args.word(1));
       } catch (Acoustic::SolverError &e) {
-        error->all(FLERR, "Illegal {} command: {}", CMD, e.what());
+        args.reject(FLERR, 1, "{}", e.what());
       }
-      iarg += 2;
     } else {
-      error->all(FLERR, "Illegal {} command: unknown keyword {}; keywords are direction, mode, "
-                        "stiffness, kappa_scale, ratio, cmu, mu_min, model, damping, solver, reuse, "
-                        "tolerance, max_iterations, preconditioner, shift, ordering, low_rank", CMD, key);
+      args.unknown("direction, mode, stiffness, kappa_scale, ratio, cmu, mu_min, model, damping, "
+                   "solver, reuse, tolerance, max_iterations, preconditioner, shift, ordering, "
+                   "low_rank, region_walls");
     }
+    args.next();
   }
 }
 
@@ -339,11 +287,11 @@ void FixAcousticMindlin::normalise_direction()
 {
   const int dim = domain->dimension;
   if (dim == 2 && direction[2] != 0.0)
-    error->all(FLERR, "Illegal {} command: in 2D the direction must lie in the xy plane "
+    error->all(FLERR, "{}: in 2D the direction must lie in the xy plane "
                       "(dz = 0)", CMD);
   const double largest = MAX(fabs(direction[0]), MAX(fabs(direction[1]), fabs(direction[2])));
   if (largest == 0.0)
-    error->all(FLERR, "Illegal {} command: direction must not be the zero vector", CMD);
+    error->all(FLERR, "{}: direction must not be the zero vector", CMD);
   for (double &d : direction) d /= largest;
   const double norm = sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
                            direction[2] * direction[2]);
@@ -351,7 +299,7 @@ void FixAcousticMindlin::normalise_direction()
   for (int k = 0; k < dim; k++)
     if (fabs(direction[k]) == 1.0) direction_axis = k;
   if (source_mode == NORMAL && direction_axis < 0)
-    error->all(FLERR, "Illegal {} command: mode normal prescribes one Cartesian component of the "
+    error->all(FLERR, "{}: mode normal prescribes one Cartesian component of the "
                       "source grains; give a direction along x, y or z", CMD);
 }
 

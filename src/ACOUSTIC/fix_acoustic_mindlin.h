@@ -140,7 +140,7 @@ class FixAcousticMindlin : public Fix {
   class Halo;
   void begin_halo(int width);
 
-  void parse_keywords(int iarg, int narg, char **arg);
+  void parse_keywords(class CommandArguments &);
   void init_source();
   void init_other_fixes();
   void normalise_direction();

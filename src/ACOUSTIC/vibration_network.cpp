@@ -20,6 +20,7 @@
 #include "acoustic_mindlin_law.h"
 #include "acoustic_solver_error.h"
 #include "collective_error.h"
+#include "command_arguments.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -40,90 +41,49 @@ static constexpr int CONTACT_WORDS = 9;    // tag_i, tag_j, n[3], kn, kt, cn, ct
 
 /* ---------------------------------------------------------------------- */
 
-double VibrationNetworkSettings::finite_number(const char *word, const std::string &command,
-                                               const std::string &what, LAMMPS *lmp)
+bool VibrationNetworkSettings::parse(CommandArguments &args, bool allow_damping)
 {
-  const double value = utils::numeric(FLERR, word, false, lmp);
-  if (!std::isfinite(value))
-    lmp->error->all(FLERR, "Illegal {} command: {} must be a finite number, got {}", command, what,
-                    word);
-  return value;
-}
-
-/* ---------------------------------------------------------------------- */
-
-int VibrationNetworkSettings::parse(int iarg, int narg, char **arg, const std::string &command,
-                                    LAMMPS *lmp, bool allow_damping)
-{
-  Error *error = lmp->error;
-  const std::string key = arg[iarg];
-  auto need = [&](int n) {
-    if (iarg + n >= narg)
-      error->all(FLERR, "Illegal {} command: keyword {} needs {} value(s)", command, key, n);
-  };
-  if (key == "stiffness") {
-    need(1);
-    const std::string which = arg[iarg + 1];
+  if (args.take("stiffness", 1)) {
+    const std::string which = args.word(1);
     if (which == "pair") {
       stiffness = PAIR;
-      return 2;
-    }
-    if (which == "hertz") {
-      need(3);
+    } else if (which == "hertz" && args.take("stiffness", 3)) {
       stiffness = HERTZ;
-      youngs_modulus = finite_number(arg[iarg + 2], command, "Young's modulus E", lmp);
-      poisson_ratio = finite_number(arg[iarg + 3], command, "Poisson ratio nu", lmp);
+      youngs_modulus = args.number(2);
+      poisson_ratio = args.number(3);
       if (youngs_modulus <= 0.0)
-        error->all(FLERR, "Illegal {} command: stiffness hertz needs Young's modulus E > 0, got {}",
-                   command, youngs_modulus);
+        args.reject(FLERR, 2, "stiffness hertz needs Young's modulus E > 0, got {}", youngs_modulus);
       if (poisson_ratio <= -1.0 || poisson_ratio >= 0.5)
-        error->all(FLERR, "Illegal {} command: stiffness hertz needs -1 < nu < 0.5, got {}",
-                   command, poisson_ratio);
-      return 4;
+        args.reject(FLERR, 3, "stiffness hertz needs -1 < nu < 0.5, got {}", poisson_ratio);
+    } else {
+      args.reject(FLERR, 1, "stiffness must be 'pair' or 'hertz E nu', got '{}'", which);
     }
-    error->all(FLERR, "Illegal {} command: stiffness must be 'pair' or 'hertz E nu', got '{}'",
-               command, which);
-  }
-  if (key == "kappa_scale") {
-    need(1);
-    kappa_scale = finite_number(arg[iarg + 1], command, "kappa_scale", lmp);
+  } else if (args.take("kappa_scale", 1)) {
+    kappa_scale = args.number(1);
     // a factor on the Hertz constant of a real material: far outside
     // 1e-100 .. 1e100 the stiffnesses leave the range of doubles
     if (!(kappa_scale >= 1e-100 && kappa_scale <= 1e100))
-      error->all(FLERR, "Illegal {} command: kappa_scale must be in [1e-100, 1e100] (a factor on "
-                        "the Hertz constant), got {}", command, kappa_scale);
-    return 2;
-  }
-  if (key == "ratio") {
-    need(1);
-    ratio = finite_number(arg[iarg + 1], command, "ratio", lmp);
-    if (ratio < 0.0)
-      error->all(FLERR, "Illegal {} command: ratio k_t/k_n must be >= 0, got {}", command, ratio);
-    return 2;
-  }
-  if (key == "model") {
-    need(1);
+      args.reject(FLERR, 1, "kappa_scale must be in [1e-100, 1e100] (a factor on the Hertz "
+                            "constant), got {}", kappa_scale);
+  } else if (args.take("ratio", 1)) {
+    ratio = args.number(1);
+    if (ratio < 0.0) args.reject(FLERR, 1, "ratio k_t/k_n must be >= 0, got {}", ratio);
+  } else if (args.take("model", 1)) {
     try {
-      model = Acoustic::contact_model_from_name(arg[iarg + 1]);
+      model = Acoustic::contact_model_from_name(args.word(1));
     } catch (Acoustic::SolverError &e) {
-      error->all(FLERR, "Illegal {} command: {}", command, e.what());
+      args.reject(FLERR, 1, "{}", e.what());
     }
-    return 2;
+  } else if (args.take("region_walls", 1)) {
+    region_walls = args.logical(1);
+  } else if (allow_damping && args.take("damping", 1)) {
+    damping_ratio = args.number(1);
+    if (damping_ratio < 0.0) args.reject(FLERR, 1, "damping ratio must be >= 0, got {}", damping_ratio);
+  } else {
+    return false;
   }
-  if (key == "region_walls") {
-    need(1);
-    region_walls = utils::logical(FLERR, arg[iarg + 1], false, lmp) == 1;
-    return 2;
-  }
-  if (key == "damping" && allow_damping) {
-    need(1);
-    damping_ratio = finite_number(arg[iarg + 1], command, "damping ratio", lmp);
-    if (damping_ratio < 0.0)
-      error->all(FLERR, "Illegal {} command: damping ratio must be >= 0, got {}", command,
-                 damping_ratio);
-    return 2;
-  }
-  return 0;
+  args.next();
+  return true;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -587,5 +547,46 @@ void VibrationNetwork::scatter(const Eigen::VectorXcd &values, double **out, int
       continue;
     }
     for (int k = 0; k < 2 * ndof; k++) out[i][k] = recvbuf[m++];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void VibrationNetwork::scatter_displacements(const Eigen::VectorXd &values, double **out, int ncols,
+                                             int groupbit)
+{
+  const int ndof = dofs_per_grain();
+  const int dim = domain->dimension;
+  const int nprocs = comm->nprocs;
+  std::vector<int> counts(nprocs, 0), displs(nprocs, 0);
+  std::vector<double> sendbuf;
+  if (comm->me == 0) {
+    for (int p = 0; p < nprocs; p++) counts[p] = ndof * sent_counts[p];
+    for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+    sendbuf.reserve(ndof * sent_grain_index.size());
+    for (int g : sent_grain_index)
+      for (int k = 0; k < ndof; k++) sendbuf.push_back(values[g * ndof + k]);
+  }
+  int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  int nmine = 0;
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) nmine++;
+  std::vector<double> recvbuf(ndof * nmine);
+  MPI_Scatterv(sendbuf.data(), counts.data(), displs.data(), MPI_DOUBLE, recvbuf.data(),
+               static_cast<int>(recvbuf.size()), MPI_DOUBLE, 0, world);
+  // DOFs of a grain: dim translations, then its rotations (1 in 2D, 3 in 3D)
+  const bool rotations = ncols >= 6 && ndof > dim;
+  int m = 0;
+  for (int i = 0; i < nlocal; i++) {
+    for (int k = 0; k < ncols; k++) out[i][k] = 0.0;
+    if (!(mask[i] & groupbit)) continue;
+    const double *grain = &recvbuf[m];
+    m += ndof;
+    for (int k = 0; k < dim; k++) out[i][k] = grain[k];
+    if (!rotations) continue;
+    if (dim == 2) out[i][5] = grain[dim];
+    else
+      for (int k = 0; k < 3; k++) out[i][3 + k] = grain[dim + k];
   }
 }

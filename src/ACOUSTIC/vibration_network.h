@@ -44,15 +44,9 @@ struct VibrationNetworkSettings {
   double damping_ratio = 0.0;
   bool region_walls = true;    // the walls of fix wall/gran/region are in the network
 
-  // parse the network keyword at arg[iarg]; returns the number of words used,
-  // 0 if arg[iarg] is not a network keyword; errors name `command`
-  int parse(int iarg, int narg, char **arg, const std::string &command, class LAMMPS *lmp,
-            bool allow_damping);
-
-  // the number in `word`, value of `what` in `command`: an ERROR unless it is
-  // a finite number (utils::numeric lets 1e400 through as infinity)
-  static double finite_number(const char *word, const std::string &command,
-                              const std::string &what, class LAMMPS *lmp);
+  // read the network keyword at the current position of args and its values
+  // (then past them); false if it is not a network keyword
+  bool parse(class CommandArguments &args, bool allow_damping);
 };
 
 // the part of the network one processor holds, for a distributed solve
@@ -130,6 +124,12 @@ class VibrationNetwork : protected Pointers {
   // owned atom of the group receives those of its grain in out[i] as
   // (re, im) pairs, 2 dofs_per_grain() numbers; atoms outside the group get zeros
   void scatter(const Eigen::VectorXcd &values, double **out, int groupbit);
+  // rank 0 holds one real displacement per network DOF (a mode shape, a
+  // snapshot); each owned atom of the group receives its grain's in out[i]
+  // as LAMMPS lays out per-atom vectors: translations x, y, z in columns
+  // 0-2 and, when ncols is 6 and the grains rotate, rotations about x, y, z
+  // in columns 3-5 (in 2D about z only); zeros elsewhere and outside the group
+  void scatter_displacements(const Eigen::VectorXd &values, double **out, int ncols, int groupbit);
 
   int dofs_per_grain() const;
 

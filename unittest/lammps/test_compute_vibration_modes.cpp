@@ -559,9 +559,9 @@ TEST_P(Errors, Message)
 
 const BadInput kBadInputs[] = {
     {"unknown_keyword", "", "compute m all vibration/modes colour red",
-     "unknown keyword colour; keywords are stiffness"},
+     "Unknown compute vibration/modes keyword: colour; keywords are stiffness"},
     {"missing_value", "", "compute m all vibration/modes bins 10 0",
-     "keyword bins needs 3 value(s)"},
+     "Illegal compute vibration/modes bins command: missing argument(s)"},
     {"missing_fixed_group", "", "compute m all vibration/modes fixed nowhere",
      "fixed group nowhere does not exist; define it with the group command first"},
     {"unknown_method", "", "compute m all vibration/modes method arpack",

@@ -544,7 +544,7 @@ TEST(PulseErrors, ClearMessages)
       {"compute p all vibration/pulse source wall bottom detector wall bottom duration 1\n"
        "thermo_style custom step c_p[1][2]\nrun 0", "the source and the detector are the same wall"},
       {"compute p all vibration/pulse source wall bottom detector wall top duration 1 loud 3",
-       "unknown keyword loud"},
+       "Unknown compute vibration/pulse keyword: loud"},
   };
   for (const Bad &b : bad) {
     LammpsInstance L;

@@ -63,8 +63,8 @@ BAD_INPUTS = [
      "Floating point number 1e400 in input script or data file is out of range"),
     ("fix_missing_source_group", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source floor",
      "source group floor does not exist"),
-    ("fix_unknown_keyword", FIX + " loudness 3", "unknown keyword loudness"),
-    ("fix_keyword_without_value", FIX + " cmu", "keyword cmu needs 1 value(s)"),
+    ("fix_unknown_keyword", FIX + " loudness 3", "Unknown fix acoustic/mindlin keyword: loudness"),
+    ("fix_keyword_without_value", FIX + " cmu", "Illegal fix acoustic/mindlin cmu command: missing argument(s)"),
     ("fix_zero_direction", FIX + " direction 0 0 0", "direction must not be the zero vector"),
     ("fix_infinite_direction", FIX + " direction 1e400 0 0",
      "Floating point number 1e400 in input script or data file is out of range"),
@@ -124,7 +124,7 @@ BAD_INPUTS = [
      "set group all diameter 1.002\nset group all density 1.0\n" + FIX + "\nrun 0",
      "are at the same position: their contact has no normal"),
     # compute vibration/modes
-    ("compute_unknown_keyword", COMPUTE + " loudness 3", "unknown keyword loudness"),
+    ("compute_unknown_keyword", COMPUTE + " loudness 3", "Unknown compute vibration/modes keyword: loudness"),
     ("compute_region_walls_not_boolean", COMPUTE + " region_walls maybe", "Expected boolean parameter"),
     ("fix_region_source_without_direction",
      "region lid plane 0 -0.45 0 0 1 0 units box\n"
@@ -169,13 +169,13 @@ BAD_INPUTS = [
     ("pulse_modes_with_damping", PULSE + " method modes damping 0.1", "method modes needs an undamped network"),
     ("pulse_zero_direction", PULSE + " direction 0 0 0", "direction must not be the zero vector"),
     ("pulse_direction_out_of_plane", PULSE + " direction 0 0 1", "in 2D the direction must lie in the xy plane"),
-    ("pulse_unknown_keyword", PULSE + " loudness 3", "unknown keyword loudness"),
+    ("pulse_unknown_keyword", PULSE + " loudness 3", "Unknown compute vibration/pulse keyword: loudness"),
     ("pulse_missing_detector", "compute p all vibration/pulse source base duration 20",
      "got 'duration' where 'detector' belongs"),
     ("pulse_missing_group", "compute p all vibration/pulse source base detector roof duration 20",
      "detector group roof does not exist"),
     ("pulse_wall_without_id", "compute p all vibration/pulse source base detector wall",
-     "detector wall needs the ID of a fix wall/gran"),
+     "Illegal compute vibration/pulse detector command: missing argument(s)"),
     ("pulse_wall_not_wall_gran", TOP + "compute p all vibration/pulse source wall plane detector top duration 20",
      "source wall plane is not a fix wall/gran"),
     ("pulse_same_wall", FLOOR + "compute p all vibration/pulse source wall floor detector wall floor "
@@ -284,3 +284,30 @@ def test_huge_amplitude_gives_the_smallest_factor(tmp_path, ranks):
     assert contacts > 50
     assert minimum == pytest.approx(0.2)
     assert 0.2 <= mean < 1.0
+
+
+# (name, lines after LAYER, the word the ERROR must mark)
+MARKED_WORDS = [
+    ("fix_unknown_keyword", FIX + " loudness 3", "loudness"),
+    ("fix_bad_value", FIX + " cmu -2", "-2"),
+    ("fix_missing_source_group", "fix ac all acoustic/mindlin 10 frequency 5 amplitude 1e-3 source floor", "floor"),
+    ("compute_unknown_keyword", COMPUTE + " loudness 3", "loudness"),
+    ("compute_bad_value", COMPUTE + " nmodes 0", "0"),
+    ("pulse_unknown_keyword", PULSE + " loudness 3", "loudness"),
+    ("pulse_bad_value", PULSE + " samples 1", "1"),
+]
+
+
+@pytest.mark.parametrize("name,deck,word", MARKED_WORDS, ids=[case[0] for case in MARKED_WORDS])
+def test_error_marks_the_offending_word(tmp_path, name, deck, word):
+    """LAMMPS's argument-pointer errors: the log echoes the command and puts
+    carets under the word at fault."""
+    returncode, screen, log = run_batch(tmp_path, deck, 1)
+    assert returncode != 0, f"{name}: the run did not fail\n{screen}"
+    lines = log.splitlines()
+    echo = next(k for k, line in enumerate(lines) if line.startswith("Last input line: "))
+    command, carets = lines[echo], lines[echo + 1]
+    start = carets.index("^")
+    assert carets.strip() == "^" * len(word), f"{name}: {carets!r}"
+    assert command[start:start + len(word)] == word and command[start - 1] == " ", \
+        f"{name}: the carets point at {command[start:start + len(word)]!r}, not {word!r}\n{command}\n{carets}"
