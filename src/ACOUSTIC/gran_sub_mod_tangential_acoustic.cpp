@@ -17,6 +17,9 @@
 
 #include "gran_sub_mod_tangential_acoustic.h"
 
+#include "citations_acoustic.h"
+#include "citeme.h"
+
 #include "granular_model.h"
 
 using namespace LAMMPS_NS;
@@ -30,6 +33,7 @@ template <class Model>
 GranSubModTangentialAcoustic<Model>::GranSubModTangentialAcoustic(GranularModel *gm, LAMMPS *lmp) :
     Model(gm, lmp), model_size_history(this->size_history)
 {
+  if (lmp->citeme) lmp->citeme->add(AcousticCitations::two_time_scale_model);
   // the wrapped model's transfer factors (-1 by default: a tangential
   // displacement changes sign between i and j), +1 for the factor
   auto *factors = new double[model_size_history + 1];
@@ -43,15 +47,12 @@ GranSubModTangentialAcoustic<Model>::GranSubModTangentialAcoustic(GranularModel 
 }
 
 /* ----------------------------------------------------------------------
-   the wrapped model with the Coulomb limit s mu F_n,crit
+   the Coulomb limit of the wrapped model's calculate_forces(): s mu F_n,crit
 ------------------------------------------------------------------------- */
 
-template <class Model> void GranSubModTangentialAcoustic<Model>::calculate_forces()
+template <class Model> double GranSubModTangentialAcoustic<Model>::coulomb_mu() const
 {
-  const double mu_of_model = this->mu;
-  this->mu = mu_of_model * friction_factor(&this->gm->history[friction_factor_index()]);
-  Model::calculate_forces();
-  this->mu = mu_of_model;
+  return this->mu * friction_factor(&this->gm->history[friction_factor_index()]);
 }
 
 /* ---------------------------------------------------------------------- */

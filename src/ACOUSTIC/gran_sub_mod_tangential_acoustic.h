@@ -15,7 +15,9 @@
    Tangential sub-models <model>/acoustic of pair_style granular and fix
    wall/gran: the tangential model <model> with a per-contact friction
    factor s, kept as one more value of the contact's history.  The factor
-   scales the Coulomb limit to s mu F_n,crit and nothing else; fix
+   scales the Coulomb limit to s mu F_n,crit and nothing else (through
+   GranSubModTangential::coulomb_mu(), which the LAMMPS patch
+   cmake/patches/gran-sub-mod-tangential-coulomb-mu.patch adds); fix
    acoustic/mindlin sets it from the ultrasonic vibration of the contact.
 
    The history stores 1 - s, so that a new contact (history zero) starts
@@ -66,7 +68,8 @@ namespace Granular_NS {
   class GranSubModTangentialAcoustic : public Model, public AcousticFrictionFactor {
    public:
     GranSubModTangentialAcoustic(class GranularModel *, class LAMMPS *);
-    void calculate_forces() override;
+    // the wrapped model's mu times the factor of the current contact
+    double coulomb_mu() const override;
     int friction_factor_index() const override;
     double tangential_stiffness(double contact_radius) const override;
 
