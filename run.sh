@@ -27,7 +27,7 @@ debian_packages=(
   libeigen3-dev libsuitesparse-dev libmumps-dev libspectra-dev liblapack-dev libblas-dev libopenblas0-serial
   libpetsc-complex-dev libmetis-dev
   libgtest-dev patch
-  python3-numpy python3-scipy python3-matplotlib python3-pytest
+  python3-numpy python3-scipy python3-matplotlib python3-pytest python3-pip python3-setuptools
 )
 
 say() { printf '[acoustic] %s\n' "$*"; }
@@ -59,6 +59,18 @@ install_packages() {
     as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
       "${missing[@]}" >/dev/null
   fi
+}
+
+# the Python tools (tools/, package acoustic_tools) in Debian's interpreter,
+# editable, unless acoustic_tools already imports from this checkout's tools/
+install_tools() {
+  local found
+  found=$(/usr/bin/python3 -I -c 'import acoustic_tools, os; print(os.path.realpath(acoustic_tools.__path__[0]))' \
+    2>/dev/null) || true
+  [ "$found" = "$(realpath "$top/tools/acoustic_tools")" ] && return
+  say "installing the Python tools of $top/tools (editable)"
+  as_root /usr/bin/python3 -m pip install -q --no-deps --no-build-isolation --no-index --break-system-packages \
+    -e "$top/tools" >/dev/null
 }
 
 # LAMMPS "4 Feb 2025": the upstream source of Debian 13 (trixie)'s lammps package
@@ -151,6 +163,7 @@ lammps_source() {
 
 configure_and_build() {
   install_packages
+  install_tools
   lammps_source
   say "LAMMPS source: $LAMMPS_SOURCE_DIR"
   mkdir -p "$build"

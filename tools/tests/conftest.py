@@ -1,25 +1,15 @@
-"""Fixtures shared by the tools tests: the scripts of examples/avalanche,
-loaded as modules (they are not on the import path)."""
-import importlib.util
-import os
-
+"""Fixtures shared by the tools tests: the modules behind the command lines
+examples/avalanche/collect.py and record.py."""
 import pytest
 
-AVALANCHE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "avalanche")
-
-
-def load_avalanche_script(name):
-    spec = importlib.util.spec_from_file_location(f"avalanche_{name}", os.path.join(AVALANCHE, f"{name}.py"))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+from acoustic_tools import avalanche_collect, avalanche_record
 
 
 @pytest.fixture(scope="session")
 def collect():
-    return load_avalanche_script("collect")
+    return avalanche_collect
 
 
 @pytest.fixture(scope="session")
 def record():
-    return load_avalanche_script("record")
+    return avalanche_record

@@ -1,11 +1,11 @@
-"""tools/avalanche.py on small synthetic dumps and series with known answers."""
+"""acoustic_tools.avalanche on small synthetic dumps and series with known answers."""
 import math
 
 import numpy as np
 import pytest
 
-import avalanche as av
-from lammps_output import Snapshot, read_dump
+from acoustic_tools import avalanche as av
+from acoustic_tools.lammps_output import Snapshot, read_dump
 
 DT = 1e-3
 
@@ -388,7 +388,7 @@ def test_band_from_a_density_of_states(tmp_path, capsys):
 
 def test_figures_from_synthetic_runs(tmp_path):
     """Each figure of avalanche_figures.py is written from small synthetic files."""
-    import avalanche_figures as figs
+    from acoustic_tools import avalanche_figures as figs
     dump = tmp_path / "run.dump"
     dump.write_text(dump_text([(100, layer_rows(11.0, (2, 2), (1, 3)))]))
     contacts = tmp_path / "run.contacts"
@@ -422,17 +422,14 @@ def test_figures_from_synthetic_runs(tmp_path):
 
 
 def test_fig7_draws_the_points_of_another_coupling(tmp_path):
-    """thetam --coupling: the points of the table (theta_m on x, H/d on y)
-    with their standard deviations as error bars, labelled with the name."""
-    import argparse
-    import avalanche_figures as figs
-    table7 = tmp_path / "thetam.txt"
-    table7.write_text("3 20 1.0 14.5 0.5 20 14.5\n6 19.5 1.2 15 0.7 nan nan\n")
-    coupling = tmp_path / "coupling.txt"
-    coupling.write_text("6.07 16.5 0.41\n13.91 14.75 0.5\n")
-    a = argparse.Namespace(table=str(table7), label="free ends", free=None, free_label="",
-                           coupling=[(str(coupling), "kappa_scale 0.17")])
-    ax = figs.fig_thetam(a).axes[0]
+    """fig_thetam's couplings: the points of the table (theta_m on x, H/d on
+    y) with their standard deviations as error bars, labelled with the name."""
+    from acoustic_tools import avalanche_figures as figs
+    table7 = [(3, 20, 1.0, 14.5, 0.5, 20, 14.5), (6, 19.5, 1.2, 15, 0.7, np.nan, np.nan)]
+    coupling = [(6.07, 16.5, 0.41), (13.91, 14.75, 0.5)]
+    fig = figs.fig_thetam(tmp_path / "fig7.png", table7, "free ends", couplings=[(coupling, "kappa_scale 0.17")])
+    assert (tmp_path / "fig7.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    ax = fig.axes[0]
     drawn = [c for c in ax.containers if c.get_label() == "70 kHz, kappa_scale 0.17 (mean ± s.d.)"]
     assert len(drawn) == 1
     points, _, (bars,) = drawn[0].lines

@@ -1,8 +1,8 @@
-"""examples/avalanche/collect.py on synthetic run directories: the per-packing
-numbers it reads from the logs (theta_m, t_con, first spreading flow, mean
-mu*/mu before theta_m) and the ensemble statistics built on them (mean,
-standard deviation, paired shift, slope of theta_m(H/d)) against values
-worked out by hand."""
+"""examples/avalanche/collect.py (acoustic_tools.avalanche_collect) on
+synthetic run directories: the per-packing numbers it reads from the logs
+(theta_m, t_con, first spreading flow, mean mu*/mu before theta_m) and the
+ensemble statistics built on them (mean, standard deviation, paired shift,
+slope of theta_m(H/d)) against values worked out by hand."""
 import os
 
 import numpy as np

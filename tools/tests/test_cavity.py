@@ -1,16 +1,12 @@
-"""tools/cavity.py and cavity_figures.py on synthetic data with known answers
+"""acoustic_tools.cavity and cavity_figures on synthetic data with known answers
 (paper 004, granular lid-driven cavity)"""
 import math
-import os
-import sys
 
 import numpy as np
 import pytest
 from scipy import integrate, signal, special, stats
 
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-import cavity  # noqa: E402
-import lammps_output  # noqa: E402
+from acoustic_tools import cavity, lammps_output
 
 
 # ---------------------------------------------------------------------------
@@ -279,7 +275,7 @@ def test_portion_forces_of_dumped_contacts(tmp_path):
 # figures
 
 def test_figures_are_written(tmp_path):
-    import cavity_figures as cf
+    from acoustic_tools import cavity_figures as cf
 
     rng = np.random.default_rng(2)
     IM = np.array([1e-3, 5e-3, 2e-2, 8e-2, 0.3])

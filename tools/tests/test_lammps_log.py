@@ -1,10 +1,10 @@
-"""tools/lammps_log.py on small synthetic logs with known content."""
+"""acoustic_tools.lammps_log on small synthetic logs with known content."""
 import math
 
 import numpy as np
 import pytest
 
-from lammps_log import read_log
+from acoustic_tools.lammps_log import read_log
 
 LOG = """LAMMPS (29 Sep 2021 - Update 2)
 units lj
@@ -56,7 +56,7 @@ def test_unknown_column_names_the_columns(logfile):
 
 
 def test_wall_time(tmp_path):
-    from lammps_log import wall_time
+    from acoustic_tools.lammps_log import wall_time
     done = tmp_path / "done.log"
     done.write_text("Loop time of 1.5 on 2 procs for 10 steps with 4 atoms\nTotal wall time: 1:02:03\n")
     assert wall_time(done) == 3723

@@ -1,11 +1,11 @@
-"""tools/lammps_output.py on small files written as LAMMPS writes them:
+"""acoustic_tools.lammps_output on small files written as LAMMPS writes them:
 dumps (custom and local, with and without atoms, orthogonal and triclinic
 boxes, a last snapshot cut short) and the files of fix ave/time (scalar and
 vector mode) and fix ave/chunk."""
 import numpy as np
 import pytest
 
-import lammps_output as lo
+from acoustic_tools import lammps_output as lo
 
 BOX = "ITEM: BOX BOUNDS pp ff pp\n-1e-03 5.1e-02\n-1e-03 4.4e-02\n-1e-03 1e-03\n"
 TRICLINIC = "ITEM: BOX BOUNDS xy xz yz pp ff pp\n-2 5 0.5\n-1 4 0\n-1 1 0\n"

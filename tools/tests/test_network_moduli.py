@@ -1,4 +1,4 @@
-"""tools/network_moduli.py against elastic moduli known in closed form: a
+"""acoustic_tools.network_moduli against elastic moduli known in closed form: a
 column of grains (springs in series) and the triangular lattice (Lame
 constants of central and tangential springs)"""
 import math
@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-import network_moduli
+from acoustic_tools import network_moduli
 
 
 def packing(ids, x, y, bonds, wall_contacts, k, k_wall):

@@ -1,11 +1,11 @@
-"""tools/sound.py on synthetic signals and packings with known answers"""
+"""acoustic_tools.sound on synthetic signals and packings with known answers"""
 import math
 
 import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-import sound
+from acoustic_tools import sound
 
 
 def ricker(t, t0, width, amplitude):
@@ -124,7 +124,7 @@ def test_speeds():
 
 
 def test_figures_are_written(tmp_path):
-    import sound_figures
+    from acoustic_tools import sound_figures
 
     t = np.linspace(0.0, 100.0, 500)
     signals = [(t, np.exp(-((t - 40.0 - k) / 5.0) ** 2)) for k in range(3)]

@@ -6,7 +6,7 @@ network), some for the rough-base source, and spectrum and sound speed
 scaling as kappa_scale^(1/3) (Hertz stiffness at fixed force: k ~ kappa^(2/3)).
 in.modes on the same layer: the density of states of the kernel polynomial
 method (method kpm, for layers too large for the dense solver) puts the drive
-where the dense eigenfrequencies do (tools/avalanche.py band)."""
+where the dense eigenfrequencies do (acoustic_tools.avalanche band)."""
 import json
 import os
 import subprocess
@@ -16,7 +16,6 @@ import pytest
 
 LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "avalanche")
-TOOLS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools")
 
 
 @pytest.fixture(scope="module")
@@ -86,7 +85,7 @@ def test_one_scan_without_spectrum_repeats_the_full_scan(scan):
 
 def test_figure(scan):
     work, _ = scan
-    done = subprocess.run([sys.executable, os.path.join(TOOLS, "avalanche_figures.py"), "calibration",
+    done = subprocess.run([sys.executable, "-m", "acoustic_tools.avalanche_figures", "calibration",
                            str(work / "scan.json"), "-o", str(work / "calibration.png")],
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr[-2000:]
@@ -104,9 +103,8 @@ def modes(work, method, tag):
 
 
 def test_kpm_band_against_the_dense_modes(layer):
-    sys.path.insert(0, TOOLS)
-    import avalanche as av
-    from lammps_output import read_ave_time_vector
+    from acoustic_tools import avalanche as av
+    from acoustic_tools.lammps_output import read_ave_time_vector
     dense_hist, dense_line = modes(layer, "dense", "dense")
     kpm_hist, kpm_line = modes(layer, "kpm", "kpm")
     assert "highest mode" in dense_line and "rattler DOFs (kpm)" in kpm_line

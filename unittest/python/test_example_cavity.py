@@ -1,7 +1,7 @@
 """examples/cavity (paper 004's lid-driven cavity) end to end on a small
 cavity: the deck runs in LAMMPS, its three scales of wall force come from
 different LAMMPS consumers (a dump of the contacts, compute reduce/chunk,
-compute reduce) and must agree; tools/cavity.py reads every output."""
+compute reduce) and must agree; acoustic_tools.cavity reads every output."""
 import math
 import os
 import re
@@ -10,8 +10,7 @@ import subprocess
 import numpy as np
 import pytest
 
-import cavity
-import lammps_output
+from acoustic_tools import cavity, lammps_output
 
 LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "cavity")
@@ -30,11 +29,6 @@ def run_deck(path, variables):
     return log
 
 
-def read_params(path):
-    words = open(path).read().split()
-    return {k: (float(v) if k != "tag" else v) for k, v in zip(words[::2], words[1::2])}
-
-
 @pytest.fixture(scope="module")
 def small_run(tmp_path_factory):
     path = tmp_path_factory.mktemp("cavity")
@@ -44,7 +38,7 @@ def small_run(tmp_path_factory):
 
 def test_control_parameters_are_paper_004s(small_run):
     path, log = small_run
-    p = read_params(path / "c.params")
+    p = lammps_output.read_key_values(path / "c.params")
     d, H = p["d"], p["H"]
     assert H == pytest.approx(4 * d) and p["L"] == pytest.approx(5 * H)
     assert p["P"] == pytest.approx(cavity.pressure_from_NP(4, 0.6, 2500, 9.81, H), rel=1e-12)
@@ -59,7 +53,7 @@ def test_control_parameters_are_paper_004s(small_run):
 
 def test_three_scales_of_wall_force_agree(small_run):
     path, _ = small_run
-    p = read_params(path / "c.params")
+    p = lammps_output.read_key_values(path / "c.params")
     wall = lammps_output.read_ave_time(str(path / "c.wall.txt"))
     F = wall["F"]
     portions = np.column_stack([wall[f"F_{i}"] for i in range(1, 11)])
@@ -85,7 +79,7 @@ def test_three_scales_of_wall_force_agree(small_run):
 
 def test_mean_force_and_vortex(small_run):
     path, _ = small_run
-    p = read_params(path / "c.params")
+    p = lammps_output.read_key_values(path / "c.params")
     wall = lammps_output.read_ave_time(str(path / "c.wall.txt"))
     fnorm = wall["F"].mean() / (p["P"] * p["L"] * p["d"])
     # the deck's own running mean (fix ave/time ave running) is the mean of the records

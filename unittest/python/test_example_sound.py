@@ -1,5 +1,5 @@
 """examples/sound end to end on small systems: the decks run in LAMMPS and
-tools/sound.py reads their outputs.  The 1D chain must show paper 003's
+acoustic_tools.sound reads their outputs.  The 1D chain must show paper 003's
 exponents (gamma = 2/3 for condition A, 1 for B); a small confined packing
 must reach its pressure at rest and carry a pulse at about paper 003's speed."""
 import os
@@ -8,9 +8,7 @@ import subprocess
 import numpy as np
 import pytest
 
-import lammps_output
-import network_moduli
-import sound
+from acoustic_tools import lammps_output, network_moduli, sound
 
 LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "sound")
@@ -62,7 +60,7 @@ def thermo_columns(log_text, first):
 def test_small_packing(tmp_path):
     log = run_deck(tmp_path, "in.sound", {"here": HERE, "p": "1e-4", "W": 8, "H": 8, "seed": 1, "dir": tmp_path,
                                           "thermo_every": 10})
-    summary = sound.read_summary(str(tmp_path / "summary.txt"))
+    summary = lammps_output.read_key_values(str(tmp_path / "summary.txt"))
     assert summary["p"] == pytest.approx(1e-4, rel=0.02)
     assert summary["max_acceleration"] < 1e-10
     assert "packing: at rest" in log
@@ -81,7 +79,7 @@ def test_small_packing(tmp_path):
     moves = np.abs(np.diff(h)) / np.maximum(np.diff(step), 1)
     assert moves.max() <= fastest * dt * 1.01, "a jump of the piston"
     # the paper's anisotropy of a load-controlled compression: sigma1/sigma2 < 1
-    checks = sound.read_summary(str(tmp_path / "checks.txt"))
+    checks = lammps_output.read_key_values(str(tmp_path / "checks.txt"))
     assert checks["sigma_ratio"] < 1.0
     for key in sound.CHECKS:
         assert key in checks, key
@@ -94,7 +92,7 @@ def test_small_packing(tmp_path):
     t, f = sound.read_pulse(str(tmp_path / "pulse_A.dat"))
     peak = sound.coherent_peak(t, f)
     assert summary["h"] / peak["t_peak"] == pytest.approx(0.26, rel=0.3)
-    moduli = sound.read_summary(str(tmp_path / "moduli.txt"))
+    moduli = lammps_output.read_key_values(str(tmp_path / "moduli.txt"))
     for key in ("C11", "C12", "C22", "C33"):
         assert moduli[key] > 0.0, key
     # the DEM's moduli are those of the linear contact network (C33 a little

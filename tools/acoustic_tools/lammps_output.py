@@ -1,11 +1,13 @@
-"""Readers of LAMMPS's text outputs other than the log (tools/lammps_log.py):
-dumps and the files of fix ave/time and fix ave/chunk.
+"""Readers of LAMMPS's text outputs other than the log (acoustic_tools.lammps_log):
+dumps, the files of fix ave/time and fix ave/chunk, and the "name value"
+files that the decks write with print.
 
   read_dump             text dump custom (ITEM: ATOMS) or dump local (ITEM:
                         ENTRIES), all snapshots: list of Snapshot
   read_ave_time         fix ave/time, scalar mode: dict column -> array
   read_ave_time_vector  fix ave/time, vector mode: list of (step, rows)
   read_ave_chunk        fix ave/chunk: list of (step, dict column -> array)
+  read_key_values       name value pairs: dict name -> float (or string)
 
 A block or snapshot cut short at the end of a file (a job still running or
 killed) is dropped.  numpy only.
@@ -175,3 +177,20 @@ def read_ave_chunk(path):
         blocks.append((step, columns))
         k += 1 + nchunk
     return blocks
+
+
+def read_key_values(path):
+    """The "name value" pairs of a file that a deck writes with print, one
+    or more pairs per line (examples/sound's summary.txt, moduli.txt and
+    checks.txt, examples/cavity's TAG.params): dict name -> value, a float
+    where the value reads as one, else the string."""
+    values = {}
+    with open(path) as handle:
+        for line in handle:
+            words = line.split()
+            for name, value in zip(words[::2], words[1::2]):
+                try:
+                    values[name] = float(value)
+                except ValueError:
+                    values[name] = value
+    return values

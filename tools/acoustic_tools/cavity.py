@@ -2,7 +2,7 @@
 042906, 2017; examples/cavity).
 
 Turns the standard LAMMPS outputs of a cavity run, read with
-tools/lammps_output.py, into paper 004's quantities:
+acoustic_tools.lammps_output, into paper 004's quantities:
 
   chunks      time_average_chunks (the blocks of fix ave/chunk on a bin/2d
               grid averaged in time: the mean velocity field);
@@ -24,7 +24,7 @@ tools/lammps_output.py, into paper 004's quantities:
 
 Units are those of the run (SI for examples/cavity).  Typical use:
 
-    import cavity, lammps_output
+    from acoustic_tools import cavity, lammps_output
     wall = lammps_output.read_ave_time("run.wall.txt")   # F, F_1 .. F_10
     C = cavity.autocorrelation(wall["F_5"], 2000)
     dtc = cavity.correlation_time(C, dt_record)

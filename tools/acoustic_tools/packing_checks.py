@@ -3,7 +3,7 @@
 Called by examples/sound/in.packing through LAMMPS's `shell` command once
 the packing is at rest, on the dumps it has just written:
 
-  /usr/bin/python3 tools/packing_checks.py DIR P W H D SIGMA_RATIO
+  /usr/bin/python3 -m acoustic_tools.packing_checks DIR P W H D SIGMA_RATIO
 
 DIR holds grains.dump (id x y z radius mass) and contacts.dump (fix
 acoustic/mindlin's local array: i, j (0 for a wall), f_n, k_n); P the target
@@ -15,10 +15,7 @@ that the deck includes so that the checks reach its log.
 import os
 import sys
 
-here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, here)
-import lammps_output  # noqa: E402
-import sound  # noqa: E402
+from . import lammps_output, sound
 
 
 def packing_checks(directory, pressure, width, height, depth, sigma_ratio):

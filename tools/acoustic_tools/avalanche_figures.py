@@ -1,22 +1,26 @@
-#!/usr/bin/python3
 """PNG figures of paper 000 from avalanche runs (examples/avalanche), matplotlib only.
 
-    avalanche_figures.py modes  [RUN.dump RUN.contacts] [--hist modes.hist] [--frame K] [--f0 70e3] -o fig3.png
+Each fig_* function takes the data it draws and the path of the PNG, writes
+the PNG, says so on stdout and returns the figure (closed).  The command
+line draws them from files:
+
+    python3 -m acoustic_tools.avalanche_figures modes  [RUN.dump RUN.contacts] [--hist modes.hist] [--frame K] [--f0 70e3] -o fig3.png
         Fig. 3: density of states of the contact network, from compute vibration/modes
         (--hist, the file of in.modes) and/or rebuilt from a dump and its contacts dump
-    avalanche_figures.py sigma  RUN.series --theta 19.5 [RUN2.series --theta 15 ...] -o fig6.png
+    python3 -m acoustic_tools.avalanche_figures sigma  RUN.series --theta 19.5 [RUN2.series --theta 15 ...] -o fig6.png
         Figs. 6 / 9: sigma_1, sigma_2 against the time since the tilt to theta
-    avalanche_figures.py thetam TABLE -o fig7.png
+    python3 -m acoustic_tools.avalanche_figures thetam TABLE -o fig7.png
         Fig. 7: theta_m against H/d; TABLE lines "H/d theta0 sd0 theta70 sd70"
         (ensemble means and standard deviations; optional 6th and 7th columns:
         paper 000's values, nan if unknown); --free TABLE2 adds the free-ends ensembles
-    avalanche_figures.py tcon   TABLE -o fig8.png
+    python3 -m acoustic_tools.avalanche_figures tcon   TABLE -o fig8.png
         Fig. 8: t_con against theta; TABLE lines "label theta t_con" (one per run)
-    avalanche_figures.py kappa  TABLE -o kappa_shift.png
-        the 70 kHz shift against kappa_scale; TABLE lines "kappa H seed shift mu_factor"
-    avalanche_figures.py chains RUN.dump RUN.contacts [--frame K] -o fig10.png
+    python3 -m acoustic_tools.avalanche_figures kappa  TABLE -o kappa_shift.png
+        the 70 kHz shift against kappa_scale; TABLE lines "kappa H seed shift mu_factor
+        onset_shift geometry"
+    python3 -m acoustic_tools.avalanche_figures chains RUN.dump RUN.contacts [--frame K] -o fig10.png
         Fig. 10: force chains, width proportional to f_n, colour 1 - mu*/mu
-    avalanche_figures.py calibration calibration.json -o calibration.png
+    python3 -m acoustic_tools.avalanche_figures calibration calibration.json -o calibration.png
         the calibration scan of examples/avalanche/calibrate.py: fraction of
         contacts with mu*/mu < 0.5 against U0/d, kappa_scale, C_mu and the
         damping ratio for both sources; sound speed and highest mode against kappa_scale
@@ -34,55 +38,71 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
-import avalanche as av  # noqa: E402
-from lammps_output import read_ave_time_vector, read_dump  # noqa: E402
+from . import avalanche as av  # noqa: E402
+from .lammps_output import read_ave_time_vector, read_dump  # noqa: E402
 
 
 def _frames(dump, contacts, frame):
+    """Frame `frame` of a dump and the contacts (named columns) at its timestep."""
     atoms = read_dump(dump)[frame]
     return atoms, av.contact_columns(av.contacts_at(contacts, atoms.timestep))
 
 
-def fig_modes(a):
-    """Density of states: compute vibration/modes histogram (--hist) and/or the
-    spectrum of the network rebuilt from a dump and its contacts dump."""
+def _save(fig, path, dpi):
+    """Write fig to path (PNG, tight bounding box), close it, say so; returns fig."""
+    fig.savefig(path, dpi=dpi, bbox_inches="tight")
+    plt.close(fig)
+    print(f"wrote {path}")
+    return fig
+
+
+def sigma_runs(paths, thetas):
+    """The runs of fig_sigma from series files of in.avalanche: (the last two
+    parts of the path, the series, theta) for each path and angle."""
+    return [("/".join(path.split("/")[-2:]), av.read_series(path), theta) for path, theta in zip(paths, thetas)]
+
+
+def fig_modes(path, histogram=None, histogram_name="", network=None, f0=70e3, bins=60, dpi=110):
+    """Fig. 3, density of states: the histogram of compute vibration/modes
+    (rows centre (Hz), density (1/Hz) of the last block of in.modes' file,
+    titled histogram_name) and/or the spectrum of the network rebuilt from
+    network = (atoms, contacts), a dump frame and its contacts (named
+    columns), in `bins` bins; the drive f0 (Hz) drawn as a line."""
+    if histogram is None and network is None:
+        raise ValueError("fig_modes: give a histogram and/or a network")
     fig, ax = plt.subplots(figsize=(5, 3.2))
     title = []
-    if a.hist:
-        h = read_ave_time_vector(a.hist)[-1][1]              # last block: centre, density
-        centre, dens = h[:, 0] / 1e3, h[:, 1] * 1e3          # per kHz
+    if histogram is not None:
+        centre, dens = histogram[:, 0] / 1e3, histogram[:, 1] * 1e3          # per kHz
         width = centre[1] - centre[0]
         ax.bar(centre, dens, width=width, color="tab:blue", alpha=0.7, label="compute vibration/modes")
-        title.append(f"{os.path.basename(a.hist)}")
-    if a.dump and a.contacts:
-        atoms, contacts = _frames(a.dump, a.contacts, a.frame)
-        f = av.network_spectrum(atoms, contacts) / 1e3
+        title.append(histogram_name)
+    if network is not None:
+        f = av.network_spectrum(*network) / 1e3
         nz = f[f > 1e-6 * f.max()]
-        bins = np.linspace(0, max(nz.max(), a.f0 / 1e3) * 1.05, a.bins + 1)
-        cnt, edges = np.histogram(nz, bins=bins)
+        edges = np.linspace(0, max(nz.max(), f0 / 1e3) * 1.05, bins + 1)
+        cnt, edges = np.histogram(nz, bins=edges)
         dens = cnt / (len(nz) * np.diff(edges))
-        ax.step(edges[:-1], dens, where="post", color="k", lw=1, label="tools/avalanche.py")
-        title.append(f"{len(f)} modes ({len(f) - len(nz)} zero), {100 * np.mean(nz > a.f0 / 1e3):.1f} % "
-                     f"above {a.f0 / 1e3:g} kHz, highest {nz.max():.1f} kHz")
-    if not title:
-        sys.exit("modes: give --hist FILE and/or DUMP CONTACTS")
-    ax.axvline(a.f0 / 1e3, color="tab:orange", lw=2, label=f"drive {a.f0 / 1e3:g} kHz")
+        ax.step(edges[:-1], dens, where="post", color="k", lw=1, label="acoustic_tools.avalanche")
+        title.append(f"{len(f)} modes ({len(f) - len(nz)} zero), {100 * np.mean(nz > f0 / 1e3):.1f} % "
+                     f"above {f0 / 1e3:g} kHz, highest {nz.max():.1f} kHz")
+    ax.axvline(f0 / 1e3, color="tab:orange", lw=2, label=f"drive {f0 / 1e3:g} kHz")
     ax.set_xlabel("eigenfrequency (kHz)")
     ax.set_ylabel("density of states (1/kHz)")
     ax.set_title("\n".join(title), fontsize=8)
     ax.legend(fontsize=7)
-    return fig
+    return _save(fig, path, dpi)
 
 
-def fig_sigma(a):
-    if len(a.theta) != len(a.series):
-        sys.exit("give one --theta per series file")
-    fig, axes = plt.subplots(1, len(a.series), figsize=(4.2 * len(a.series), 3.2), squeeze=False)
-    for ax, path, theta in zip(axes[0], a.series, a.theta):
-        s = av.read_series(path)
+def fig_sigma(path, runs, dpi=110):
+    """Figs. 6 / 9: sigma_1 and sigma_2 against the time since the tilt to
+    theta, one panel per run (name, series of avalanche.read_series, theta;
+    sigma_runs reads them), the last stay at theta of each series."""
+    fig, axes = plt.subplots(1, len(runs), figsize=(4.2 * len(runs), 3.2), squeeze=False)
+    for ax, (name, s, theta) in zip(axes[0], runs):
         parts = [(t, idx) for th, t, idx in av.angle_samples(s) if abs(th - theta) < 1e-6]
         if not parts:
-            sys.exit(f"{path}: no samples at theta = {theta}")
+            raise ValueError(f"{name}: no samples at theta = {theta}")
         t, idx = parts[-1]
         ax.semilogy(t, s["sigma1"][idx], color="tab:blue", label=r"$\sigma_1$ (top)")
         ax.semilogy(t, s["sigma2"][idx], color="tab:red", label=r"$\sigma_2$ (bottom)")
@@ -91,34 +111,34 @@ def fig_sigma(a):
         ax.set_ylim(0.05, 100)
         ax.set_xlabel("time since the tilt (s)")
         ax.set_ylabel(r"$\sigma_l$")
-        ax.set_title(f"{'/'.join(path.split('/')[-2:])}: $\\theta$ = {theta:g}°", fontsize=9)
+        ax.set_title(f"{name}: $\\theta$ = {theta:g}°", fontsize=9)
         ax.legend(fontsize=8)
     fig.tight_layout()
-    return fig
+    return _save(fig, path, dpi)
 
 
-def fig_thetam(a):
-    """Fig. 7 from a table of ensembles: lines "H/d theta0 sd0 theta70 sd70
+def fig_thetam(path, table, label="this code", free=None, free_label="free ends", couplings=(), dpi=110):
+    """Fig. 7 from a table of ensembles: rows "H/d theta0 sd0 theta70 sd70
     [paper0 paper70]" (means and standard deviations over the packings, nan
-    where missing); paper 000's trend (20 deg at 3 d, -0.26 deg/d, 2 deg lower
-    with 70 kHz) is drawn as dashed lines.  --free TABLE adds a second
-    geometry (free ends) in the same format, drawn with open squares;
-    --coupling TABLE LABEL (repeatable) adds theta_m at 70 kHz at another
-    coupling, lines "H/d theta70 sd70", drawn with open diamonds."""
-    t = np.atleast_2d(np.loadtxt(a.table))
+    where missing), named label; paper 000's trend (20 deg at 3 d, -0.26
+    deg/d, 2 deg lower with 70 kHz) is drawn as dashed lines.  free: a
+    second geometry (free ends, named free_label) in the same format, drawn
+    with open squares; couplings: (rows "H/d theta70 sd70", name) of theta_m
+    at 70 kHz at other couplings, drawn with open diamonds."""
+    t = np.atleast_2d(np.asarray(table, float))
     fig, ax = plt.subplots(figsize=(7.0, 3.4))
-    sets = [(t, "o-", None, a.label)]
-    if a.free:
-        sets.append((np.atleast_2d(np.loadtxt(a.free)), "s:", "none", a.free_label))
-    for table, fmt, fill, name in sets:
-        for col, c, label in ((1, "tab:blue", "0 kHz"), (3, "tab:orange", "70 kHz")):
-            ok = np.isfinite(table[:, col])
+    sets = [(t, "o-", None, label)]
+    if free is not None:
+        sets.append((np.atleast_2d(np.asarray(free, float)), "s:", "none", free_label))
+    for rows, fmt, fill, name in sets:
+        for col, c, frequency in ((1, "tab:blue", "0 kHz"), (3, "tab:orange", "70 kHz")):
+            ok = np.isfinite(rows[:, col])
             if ok.any():
-                ax.errorbar(table[ok, col], table[ok, 0], xerr=np.nan_to_num(table[ok, col + 1]), fmt=fmt, color=c,
+                ax.errorbar(rows[ok, col], rows[ok, 0], xerr=np.nan_to_num(rows[ok, col + 1]), fmt=fmt, color=c,
                             capsize=3,
-                            label=f"{label}, {name} (mean ± s.d.)", **({"mfc": fill} if fill else {}))
-    for k, (table, name) in enumerate(a.coupling or []):
-        c = np.atleast_2d(np.loadtxt(table))
+                            label=f"{frequency}, {name} (mean ± s.d.)", **({"mfc": fill} if fill else {}))
+    for k, (rows, name) in enumerate(couplings):
+        c = np.atleast_2d(np.asarray(rows, float))
         ax.errorbar(c[:, 1], c[:, 0], xerr=np.nan_to_num(c[:, 2]), fmt="D", mfc="none", color=f"C{k + 2}",
                     capsize=3, label=f"70 kHz, {name} (mean ± s.d.)")
     h = np.linspace(3, 14.4, 2)
@@ -133,30 +153,30 @@ def fig_thetam(a):
     ax.set_ylabel("H/d")
     ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0))   # beside the axes: no point hidden
     fig.tight_layout()
-    return fig
+    return _save(fig, path, dpi)
 
 
-def fig_kappa(a):
-    """The 70 kHz shift against kappa_scale, from lines "kappa H seed shift
-    mu_factor onset_shift geometry" (one per 70 kHz ramp; onset_shift: the
+def fig_kappa(path, rows, dpi=110):
+    """The 70 kHz shift against kappa_scale, from rows (kappa, H, shift,
+    mu_factor, onset_shift, geometry) (one per 70 kHz ramp; onset_shift: the
     shift of the first spreading flow; geometry "periodic" or "free_ends"):
     every ramp (filled: theta_m, open: first spreading flow), the mean of
     theta_m's shift at each kappa for each H and geometry, and paper 000's
     shift of about 2 deg as a band."""
-    t = np.atleast_2d(np.loadtxt(a.table, usecols=(0, 1, 3, 4, 5)))
-    geometry = np.atleast_1d(np.loadtxt(a.table, usecols=6, dtype=str))
+    t = np.array([row[:5] for row in rows], float)
+    geometry = np.array([row[5] for row in rows])
     fig, ax = plt.subplots(figsize=(4.5, 3.4))
     ax.axhspan(1.5, 2.5, color="0.85", label="paper 000: ≈ 2°")
     ax.axhline(0, color="0.5", lw=0.6)
     groups = sorted({(g, H) for g, H in zip(geometry, t[:, 1])}, key=lambda x: (x[1], x[0]))
     for k, (g, H) in enumerate(groups):
-        rows = t[(geometry == g) & (t[:, 1] == H)]
-        kappas = np.unique(rows[:, 0])
-        ax.plot(rows[:, 0], rows[:, 2], "o", color=f"C{k}", alpha=0.6,
+        group = t[(geometry == g) & (t[:, 1] == H)]
+        kappas = np.unique(group[:, 0])
+        ax.plot(group[:, 0], group[:, 2], "o", color=f"C{k}", alpha=0.6,
                 label=f"H = {H:g} d, {g.replace('_', ' ')}, one ramp each")
-        ax.plot(rows[:, 0], rows[:, 4], "o", mfc="none", color=f"C{k}", alpha=0.6,
+        ax.plot(group[:, 0], group[:, 4], "o", mfc="none", color=f"C{k}", alpha=0.6,
                 label="first spreading flow")
-        ax.plot(kappas, [rows[rows[:, 0] == x, 2].mean() for x in kappas], "-", color=f"C{k}", label="mean")
+        ax.plot(kappas, [group[group[:, 0] == x, 2].mean() for x in kappas], "-", color=f"C{k}", label="mean")
     ax.set_xscale("log")
     ax.xaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
     ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
@@ -165,17 +185,16 @@ def fig_kappa(a):
     ax.set_ylabel(r"$\theta_m$(0 kHz) $-$ $\theta_m$(70 kHz) (°)")
     ax.legend(fontsize=7)
     fig.tight_layout()
-    return fig
+    return _save(fig, path, dpi)
 
 
-def fig_tcon(a):
-    """Fig. 8 from lines "label theta t_con" (one per run; several packings
+def fig_tcon(path, rows, dpi=110):
+    """Fig. 8 from rows (label, theta, t_con) (one per run; several packings
     may give several points per label and angle); labels starting with
     "paper" are reference values, drawn as stars."""
-    rows = [line.split() for line in open(a.table) if line.strip() and not line.startswith("#")]
     fig, ax = plt.subplots(figsize=(4.5, 3.4))
     for k, label in enumerate(dict.fromkeys(r[0] for r in rows)):
-        pts = np.array([[float(r[1]), float(r[2])] for r in rows if r[0] == label])
+        pts = np.array([[r[1], r[2]] for r in rows if r[0] == label], float)
         if label.startswith("paper"):           # reference values: stars, no line
             ax.plot(pts[:, 0], pts[:, 1], "*", ms=12, color="k" if "70" not in label else "tab:red", label=label)
             continue
@@ -188,11 +207,13 @@ def fig_tcon(a):
     ax.set_ylabel(r"$t_{con}$ (s)")
     ax.legend(fontsize=7)
     fig.tight_layout()
-    return fig
+    return _save(fig, path, dpi)
 
 
-def fig_chains(a):
-    atoms, c = _frames(a.dump, a.contacts, a.frame)
+def fig_chains(path, atoms, c, dpi=110):
+    """Fig. 10: the force chains of a dump frame (atoms) from its contacts
+    (c, named columns): line width proportional to f_n, colour 1 - mu*/mu,
+    the grains as disks; x periodic (nearest image)."""
     x, y = atoms["x"], atoms["y"]
     lx = atoms.box[0, 1] - atoms.box[0, 0]
     segs, width, colour = [], [], []
@@ -222,12 +243,15 @@ def fig_chains(a):
     cb.set_label(r"$1 - \mu^*/\mu$ (line width $\propto f_n$)")
     ax.set_title(f"timestep {atoms.timestep}: {len(c)} contacts, mean $\\mu^*/\\mu$ = "
                  f"{np.mean(c['mu_ratio']):.3f}", fontsize=9)
-    return fig
+    return _save(fig, path, dpi)
 
 
-def fig_calibration(a):
-    """The calibration scan (examples/avalanche/calibrate.py)."""
-    results = json.load(open(a.results))
+def fig_calibration(path, results, dpi=110):
+    """The calibration scan (the results of
+    avalanche_calibration.calibration_scan, examples/avalanche/calibrate.py's
+    JSON file): the fraction of contacts with mu*/mu < 0.5 against each
+    scanned parameter for both sources, the sound speed and the highest mode
+    against kappa_scale."""
     labels = {"U0": "$U_0/d$", "kappa": "kappa_scale", "cmu": r"$C_\mu$", "zeta": r"damping ratio $\zeta$"}
     fig, axes = plt.subplots(2, 3, figsize=(12, 7))
     for ax, name in zip(axes.flat, ("U0", "kappa", "cmu", "zeta")):
@@ -256,7 +280,7 @@ def fig_calibration(a):
     ax.set_xlabel("kappa_scale")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    return fig
+    return _save(fig, path, dpi)
 
 
 def main(argv=None):
@@ -293,10 +317,33 @@ def main(argv=None):
         q.add_argument("-o", "--output", required=True)
         q.add_argument("--dpi", type=int, default=110)
     a = p.parse_args(argv)
-    fig = {"modes": fig_modes, "sigma": fig_sigma, "thetam": fig_thetam, "tcon": fig_tcon, "kappa": fig_kappa,
-           "chains": fig_chains, "calibration": fig_calibration}[a.cmd](a)
-    fig.savefig(a.output, dpi=a.dpi, bbox_inches="tight")
-    print(f"wrote {a.output}")
+    if a.cmd == "modes":
+        if not a.hist and not (a.dump and a.contacts):
+            sys.exit("modes: give --hist FILE and/or DUMP CONTACTS")
+        fig_modes(a.output, read_ave_time_vector(a.hist)[-1][1] if a.hist else None,       # last block
+                  os.path.basename(a.hist) if a.hist else "",
+                  _frames(a.dump, a.contacts, a.frame) if a.dump and a.contacts else None, a.f0, a.bins, a.dpi)
+    elif a.cmd == "sigma":
+        if len(a.theta) != len(a.series):
+            sys.exit("give one --theta per series file")
+        try:
+            fig_sigma(a.output, sigma_runs(a.series, a.theta), a.dpi)
+        except ValueError as e:
+            sys.exit(str(e))
+    elif a.cmd == "thetam":
+        fig_thetam(a.output, np.loadtxt(a.table), a.label, np.loadtxt(a.free) if a.free else None, a.free_label,
+                   [(np.loadtxt(table), name) for table, name in a.coupling or []], a.dpi)
+    elif a.cmd == "tcon":
+        rows = [line.split() for line in open(a.table) if line.strip() and not line.startswith("#")]
+        fig_tcon(a.output, [(r[0], float(r[1]), float(r[2])) for r in rows], a.dpi)
+    elif a.cmd == "kappa":
+        rows = [line.split() for line in open(a.table) if line.strip() and not line.startswith("#")]
+        fig_kappa(a.output, [tuple(float(r[k]) for k in (0, 1, 3, 4, 5)) + (r[6],) for r in rows], a.dpi)
+    elif a.cmd == "chains":
+        fig_chains(a.output, *_frames(a.dump, a.contacts, a.frame), a.dpi)
+    else:
+        with open(a.results) as handle:
+            fig_calibration(a.output, json.load(handle), a.dpi)
     return 0
 
 

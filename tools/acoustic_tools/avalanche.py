@@ -1,8 +1,7 @@
-#!/usr/bin/python3
 """Analysis of inclined-plane avalanche runs (paper 000, examples/avalanche).
 
 Reads LAMMPS dump files (dump custom of the grains, dump local of the contacts
-written by fix acoustic/mindlin; read with tools/lammps_output.py) and the
+written by fix acoustic/mindlin; read with acoustic_tools.lammps_output) and the
 per-millisecond series file written by examples/avalanche/in.avalanche, and
 computes
 
@@ -26,20 +25,20 @@ computes
 
 Units are those of the run (SI for examples/avalanche).  Command line:
 
-    python3 tools/avalanche.py sigma   run.dump [--g 9.81]     sigma_1, sigma_2, E_k/E_t per frame
-    python3 tools/avalanche.py ramp    run.series              state of each angle, theta_m, t_con,
+    python3 -m acoustic_tools.avalanche sigma   run.dump [--g 9.81]     sigma_1, sigma_2, E_k/E_t per frame
+    python3 -m acoustic_tools.avalanche ramp    run.series              state of each angle, theta_m, t_con,
                                                                 flow shape at theta_m, sigma_1 of
                                                                 the spreading flows
-    python3 tools/avalanche.py uniform run.series [--theta 19] [--holds 0.01 0.1]
+    python3 -m acoustic_tools.avalanche uniform run.series [--theta 19] [--holds 0.01 0.1]
                                                                 uniform stretches of one angle, t_con
                                                                 with the criteria held longer
-    python3 tools/avalanche.py sigma-parts run.dump [--obs 0.3 0.7] [--dx 20] [--theta 14 14.5] [--per-frame]
+    python3 -m acoustic_tools.avalanche sigma-parts run.dump [--obs 0.3 0.7] [--dx 20] [--theta 14 14.5] [--per-frame]
                                                                 the parts of sigma_1 at each angle
-    python3 tools/avalanche.py profile run.dump run.contacts --theta 10.5 [--dz 2] [--obs 0.3 0.7]
+    python3 -m acoustic_tools.avalanche profile run.dump run.contacts --theta 10.5 [--dz 2] [--obs 0.3 0.7]
                                                                 mu*/mu against the height
-    python3 tools/avalanche.py spectrum run.dump run.contacts  frequency quantiles of the network
+    python3 -m acoustic_tools.avalanche spectrum run.dump run.contacts  frequency quantiles of the network
                                      [--frame 0] [--above 70e3]  and the fraction of modes above 70 kHz
-    python3 tools/avalanche.py band modes.hist [--drive 70e3] [--shares 0.99 0.999]
+    python3 -m acoustic_tools.avalanche band modes.hist [--drive 70e3] [--shares 0.99 0.999]
                                                                 where the drive falls in a density of
                                                                 states (in.modes, method dense or kpm)
 """
@@ -49,7 +48,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from lammps_output import Snapshot, read_ave_time_vector, read_dump
+from .lammps_output import Snapshot, read_ave_time_vector, read_dump
 
 EPS_E = 3e-8      # paper 000: E_k/E_t threshold of a stable state
 EPS_SIGMA1 = 0.3  # paper 000: sigma_1 (top half) of a uniform flow

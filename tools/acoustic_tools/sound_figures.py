@@ -7,7 +7,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-import sound  # noqa: E402
+from . import sound  # noqa: E402
 
 
 def _save(fig, path):

@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from lammps_output import read_ave_time_vector
+from .lammps_output import read_ave_time_vector
 
 
 # ---------------------------------------------------------------------------
@@ -23,20 +23,6 @@ def read_pulse(path):
     """(t, F_sig) of the last block written by compute vibration/pulse."""
     rows = read_ave_time_vector(path)[-1][1]
     return rows[:, 0], rows[:, 1]
-
-
-def read_summary(path):
-    """key value lines (summary.txt, moduli.txt) as a dict of floats"""
-    values = {}
-    with open(path) as handle:
-        for line in handle:
-            words = line.split()
-            if len(words) == 2:
-                try:
-                    values[words[0]] = float(words[1])
-                except ValueError:
-                    values[words[0]] = words[1]
-    return values
 
 
 # ---------------------------------------------------------------------------

@@ -21,7 +21,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-import cavity  # noqa: E402
+from . import cavity  # noqa: E402
 
 DPI = 110
 

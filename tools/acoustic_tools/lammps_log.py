@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Read the thermo output of a LAMMPS log file into numpy arrays.
 
 Each `run` or `minimize` prints a block of thermo lines headed by the names of
@@ -6,8 +5,8 @@ its columns ("Step Temp ...") and closed by "Loop time of ...".  read_log()
 returns one ThermoBlock per such block, so a deck that runs several times (a
 tilt ramp, say) can be analysed run by run.
 
-    python3 tools/lammps_log.py log.lammps          # summary of each block
-    python3 tools/lammps_log.py log.lammps v_theta  # one column, block by block
+    python3 -m acoustic_tools.lammps_log log.lammps          # summary of each block
+    python3 -m acoustic_tools.lammps_log log.lammps v_theta  # one column, block by block
 """
 import sys
 from dataclasses import dataclass, field

@@ -1,0 +1,31 @@
+"""ACOUSTIC's Python tools: readers of LAMMPS's outputs, the analysis of the
+examples' runs, their tables and figures (numpy, scipy, matplotlib).
+
+Readers
+  lammps_log             thermo blocks and wall time of a LAMMPS log
+  lammps_output          dumps, fix ave/time and ave/chunk files, "name value" files
+  stats                  ensemble statistics (mean, standard deviation, count)
+
+Avalanches on an inclined plane (paper 000, examples/avalanche)
+  avalanche              sigma_l, E_k/E_t, the stability test, t_con, theta_m,
+                         the spectrum of the contact network
+  avalanche_figures      the figures of paper 000
+  avalanche_collect      the ensembles of the production into tables and figures
+  avalanche_record       the result lines of the production kept in record/
+  avalanche_calibration  the calibration scan through LAMMPS's Python module
+
+Sound in confined packings (paper 003, examples/sound)
+  sound                  the coherent peak, speeds, exponents, Table I statics
+  network_moduli         C22 and C33 from the linear response of the contact network
+  packing_checks         the acceptance checks run by examples/sound/in.packing
+  sound_figures          the figures of paper 003
+  sound_collect          the samples of the production into tables and figures
+
+Granular lid-driven cavity (paper 004, examples/cavity)
+  cavity                 inertial number, vortex centre, correlation times, Eq. 7 fits
+  cavity_figures         the figures of paper 004
+  cavity_collect         the runs of run_scan.sh into tables and figures
+
+The modules with a command line run as `python3 -m acoustic_tools.MODULE`
+(avalanche, avalanche_figures, lammps_log, packing_checks).
+"""

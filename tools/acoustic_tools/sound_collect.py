@@ -1,0 +1,518 @@
+"""Collect the samples of examples/sound (run_production.sh: out/p<p>_H<H>_s<seed>[_m<mass>][_v<speed>]/,
+in.chain: out/chain/) into paper 003's tables and figures;
+examples/sound/collect.py is the command line.
+
+  samples, pistons, sample_results, usable_samples
+                        the sample directories and what each holds
+  pressure_entry        the statistics of the samples at one pressure
+  pressures_of, speed_pressures, overshoots
+                        the pressures of the samples and those with a
+                        speed, each packing's overshoot and stress ratio
+  chain_results, height_series, checks_table, piston_checks
+                        the 1D chain, the heights at one pressure, the
+                        acceptance checks beside Table I, the pistons
+  collect_results       all of it: the dict of results.json
+  tables                the markdown tables of tables.md
+  figures               the figures (sound_figures)
+  collect               what collect.py does
+"""
+import json
+import math
+import os
+import re
+
+import numpy as np
+
+from . import lammps_output, network_moduli, sound, sound_figures
+from .lammps_output import read_key_values
+from .stats import mean_sd
+
+
+# paper 003, Table II: sigma1/sigma2, C11, C12, C22, C33
+PAPER_TABLE_II = {
+    1e-7: ("0.79 ± 0.06", "(9.9 ± 0.9)e-4", "(8.1 ± 0.4)e-4", "(13.9 ± 0.8)e-4", "(1.2 ± 0.4)e-4"),
+    1e-6: ("0.79 ± 0.06", "(2.3 ± 0.2)e-3", "(1.7 ± 0.08)e-3", "(3.2 ± 0.2)e-3", "(0.35 ± 0.07)e-3"),
+    1e-5: ("0.78 ± 0.06", "(5.4 ± 0.5)e-3", "(3.5 ± 0.2)e-3", "(7.4 ± 0.3)e-3", "(1.1 ± 0.2)e-3"),
+    1e-4: ("0.71 ± 0.04", "(1.35 ± 0.09)e-2", "(6.8 ± 0.4)e-3", "(1.88 ± 0.08)e-2", "(4.0 ± 0.5)e-3"),
+}
+# C22 and Phi3* of the two tables: the paper's c_l = sqrt(C22 / Phi3*)
+PAPER_C22_PHI3STAR = {1e-7: (13.9e-4, 0.48), 1e-6: (3.2e-3, 0.49), 1e-5: (7.4e-3, 0.50), 1e-4: (1.88e-2, 0.52)}
+
+
+SAMPLE = re.compile(r"p([0-9.e+-]+)_H([0-9]+)_s([0-9]+)(_m([0-9.e+-]+))?(_v([0-9.e+-]+))?")
+DEFAULT_PISTON = ("1", "0")    # run_production.sh: SOUND_PISTON_MASS, SOUND_PISTON_SPEED
+
+
+def sample_piston(match):
+    """(mass, speed) of a sample directory's name, as run_production.sh writes them"""
+    return (match.group(5) or DEFAULT_PISTON[0], match.group(7) or DEFAULT_PISTON[1])
+
+
+def samples(out, piston=DEFAULT_PISTON):
+    """(p, H, seed) -> directory of every finished sample made with the
+    given piston (mass, speed): the default one (directories without a
+    suffix) unless told"""
+    found = {}
+    for name in sorted(os.listdir(out)):
+        match = SAMPLE.fullmatch(name)
+        path = os.path.join(out, name)
+        if not (match and os.path.exists(os.path.join(path, "moduli.txt"))):
+            continue
+        if sample_piston(match) != tuple(piston):
+            continue
+        found[(float(match.group(1)), int(match.group(2)), int(match.group(3)))] = path
+    return found
+
+
+def pistons(out):
+    """the (mass, speed) of the pistons of the sample directories"""
+    return sorted({sample_piston(match) for match in map(SAMPLE.fullmatch, os.listdir(out)) if match},
+                  key=lambda piston: (float(piston[0]), float(piston[1])))
+
+
+def mean_standard_error(values):
+    """mean and standard error of the mean"""
+    values = np.asarray(values, dtype=float)
+    if len(values) < 2:
+        return float(values.mean()), 0.0
+    return float(values.mean()), float(values.std(ddof=1) / math.sqrt(len(values)))
+
+
+def checks_table(per_sample, pressures, height=25):
+    """the acceptance checks of the packings (checks.txt of each) of the
+    given height, per pressure: mean ± standard error, beside Table I, and
+    how many of our standard errors separate the two"""
+    rows = []
+    for p in pressures:
+        at = [r for (q, H, _), r in per_sample.items() if q == p and H == height and "z_star" in r]
+        if not at:
+            continue
+        nearest, paper = sound.paper_row(p)
+        for key in sound.CHECKS:
+            values = [r[key] for r in at if key in r]
+            if not values:
+                continue
+            mean, error = mean_standard_error(values)
+            reference, spread = paper[key]
+            distance = abs(mean - reference) / error if error > 0 else math.inf
+            rows.append({"p": p, "key": key, "samples": len(values), "mean": mean, "standard_error": error,
+                         "paper": reference, "paper_sd": spread, "standard_errors_off": distance})
+    return rows
+
+
+def sample_results(path):
+    """Everything about one sample directory: summary.txt and moduli.txt,
+    the coherent peak of both pulses, the statics of Table I, whether the
+    packing came to rest, its checks.txt stress ratio, the overshoot of its
+    compression and (2D) the moduli of its contact network"""
+    summary = read_key_values(os.path.join(path, "summary.txt"))
+    result = dict(summary)
+    result.update(read_key_values(os.path.join(path, "moduli.txt")))
+    for condition in ("A", "B"):
+        t, f = sound.read_pulse(os.path.join(path, f"pulse_{condition}.dat"))
+        peak = sound.coherent_peak(t, f)
+        result.update({f"{key}_{condition}": value for key, value in peak.items()})
+    grains = lammps_output.read_dump(os.path.join(path, "grains.dump"))[-1]
+    contacts = lammps_output.read_dump(os.path.join(path, "contacts.dump"))[-1]
+    result.update(sound.static_properties(grains, contacts, summary["W"], summary["h"], summary["p"],
+                                          depth=summary.get("D") or None))
+    # the packing came to rest (every acceleration below the criterion) within
+    # the deck's max_checks (in.packing prints "packing: at rest" or "NOT at rest")
+    with open(os.path.join(path, "log.lammps")) as handle:
+        result["at_rest"] = any(line.startswith("packing: at rest") for line in handle)
+    checks_path = os.path.join(path, "checks.txt")
+    if os.path.exists(checks_path):
+        # the packing's own checks (bulk sigma1/sigma2 of the contact virial at rest)
+        result["sigma_ratio"] = read_key_values(checks_path)["sigma_ratio"]
+    if "p_peak" in summary:
+        result["overshoot"] = summary["p_peak"] / summary["p"]
+    if not summary.get("D"):
+        # the same moduli from the linear response of the contact network (2D)
+        network = network_moduli.network_moduli(grains, contacts, summary["W"], summary["h"])
+        result.update({f"{key}_network": value for key, value in network.items()})
+    return result
+
+
+def chain_results(directory):
+    """amplitude and width of the coherent peak against N for conditions A, B"""
+    out = {}
+    for condition in ("A", "B"):
+        sizes, amplitude, width = [], [], []
+        for name in os.listdir(directory):
+            match = re.fullmatch(rf"chain_{condition}_([0-9]+)\.dat", name)
+            if not match:
+                continue
+            t, f = sound.read_pulse(os.path.join(directory, name))
+            peak = sound.coherent_peak(t, f)
+            sizes.append(int(match.group(1)))
+            amplitude.append(peak["amplitude"])
+            width.append(peak["t_peak"] - peak["t10"])
+        order = np.argsort(sizes)
+        out[condition] = {"N": list(np.array(sizes)[order].tolist()),
+                          "amplitude": list(np.array(amplitude)[order].tolist()),
+                          "rise": list(np.array(width)[order].tolist())}
+    return out
+
+
+def height_series(per_sample, pressure):
+    """mean length, amplitude and width (condition A) of the coherent peak at
+    each height of the samples at this pressure, with effective exponents"""
+    heights = sorted({H for (q, H, _) in per_sample if q == pressure})
+    if len(heights) < 2:
+        return None
+    at_height = [[r for (q, H, _), r in per_sample.items() if q == pressure and H == height] for height in heights]
+    length = [float(np.mean([r["h"] for r in rows])) for rows in at_height]
+    amplitude = [float(np.mean([r["amplitude_A"] for r in rows])) for rows in at_height]
+    width = [float(np.mean([r["width_A"] for r in rows])) for rows in at_height]
+    _, g = sound.effective_exponents(length, amplitude)
+    _, a = sound.effective_exponents(length, width)
+    return {"H": heights, "L": length, "amplitude": amplitude, "width": width,
+            "samples": [len(rows) for rows in at_height], "gamma_eff": list(-g), "alpha_eff": list(a)}
+
+
+
+
+def usable_samples(out):
+    """(found, per_sample, off_target, not_at_rest): the directory of every
+    finished sample with the default piston ((p, H, seed) -> path), the
+    sample_results of those that belong to a pressure series, and the names
+    of those left out: the packings whose servo did not bring the wall
+    pressure within 5 % of the target, and those not at rest"""
+    found = samples(out)
+    per_sample = {key: sample_results(path) for key, path in found.items()}
+    off_target = sorted(os.path.basename(found[key]) for key, r in per_sample.items()
+                        if abs(r["p"] / key[0] - 1.0) > 0.05)
+    not_at_rest = sorted(os.path.basename(found[key]) for key, r in per_sample.items() if not r["at_rest"])
+    per_sample = {key: r for key, r in per_sample.items()
+                  if os.path.basename(found[key]) not in off_target + not_at_rest}
+    return found, per_sample, off_target, not_at_rest
+
+
+def pressure_entry(per_sample, p):
+    """The results of the samples at pressure p (mean, standard deviation):
+    the time-of-flight speeds and the exponents gamma and alpha of the pairs
+    of H = 8 and H = 25 packings of each seed, the statics of the H = 25
+    packings, the moduli of those whose response stayed linear, the
+    network's moduli, the sound speeds of the moduli"""
+    seeds = sorted({s for (q, _, s) in per_sample if q == p})
+    speeds = {"t10": [], "t_peak": [], "t_zero": []}
+    gammas, alphas = [], []
+    for s in seeds:
+        short, tall = per_sample.get((p, 8, s)), per_sample.get((p, 25, s))
+        if not (short and tall):
+            continue
+        for key in speeds:
+            speeds[key].append(sound.time_of_flight_speed(short["h"], short[f"{key}_A"],
+                                                           tall["h"], tall[f"{key}_A"]))
+        span = math.log(tall["h"] / short["h"])
+        gammas.append(-math.log(tall["amplitude_A"] / short["amplitude_A"]) / span)
+        alphas.append(math.log(tall["width_A"] / short["width_A"]) / span)
+    tall = [r for (q, H, _), r in per_sample.items() if q == p and H == 25]
+    entry = {"samples": len(speeds["t10"]), "tall_samples": len(tall)}
+    for key, values in speeds.items():
+        if values:
+            entry[f"c_tof_{key}"] = mean_sd(values)[:2]
+    if gammas:
+        entry["gamma"] = mean_sd(gammas)[:2]
+        entry["alpha"] = mean_sd(alphas)[:2]
+    for key in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3", "F2",
+                "F2_strong", "sigma_ratio", "sigma1_over_sigma2", "overshoot", "max_acceleration",
+                "packing_steps", "wall_seconds"):
+        if tall and key in tall[0]:
+            entry[key] = mean_sd([r[key] for r in tall])[:2]
+    # moduli: the samples whose response stayed linear (no rearrangement),
+    # judged per loading: compression and stretch (C11, C12, C22), shear (C33)
+    normal = [r for r in tall if sound.linear_response(r, keys=("C11", "C22"))]
+    shear = [r for r in tall if sound.linear_response(r, keys=("C33",))]
+    entry["moduli_samples"] = f"{len(normal)} / {len(shear)}"
+    for key in ("C11", "C12", "C12_from_eps11", "C22", "strain"):
+        if normal:
+            entry[key] = mean_sd([r[key] for r in normal])[:2]
+    if shear:
+        entry["C33"] = mean_sd([r["C33"] for r in shear])[:2]
+    # the network's moduli (every packing: the network is linear), and the
+    # DEM's over the network's on the packings whose DEM response stayed linear
+    if tall and "C22_network" in tall[0]:
+        for key in ("C22", "C33"):
+            entry[f"{key}_network"] = mean_sd([r[f"{key}_network"] for r in tall])[:2]
+        if normal:
+            entry["C22_dem_over_network"] = mean_sd([r["C22"] / r["C22_network"] for r in normal])[:2]
+        if shear:
+            entry["C33_dem_over_network"] = mean_sd([r["C33"] / r["C33_network"] for r in shear])[:2]
+    c_l, c_t = sound.sound_speeds(entry.get("C22", (math.nan,))[0], entry.get("C33", (math.nan,))[0],
+                                  entry["phi3_star"][0])
+    if "C22" in entry:
+        entry["c_l"] = c_l
+        if "c_tof_t10" in entry:
+            entry["c_tof_over_c_l"] = entry["c_tof_t10"][0] / c_l
+    if "C33" in entry:
+        entry["c_t"] = c_t
+    return entry
+
+
+def piston_checks(out):
+    """The checks of the H = 25 packings at p = 1e-4 for every piston (mass,
+    dashpot speed) of the sample directories, mean and standard error, when
+    there is more than one piston: {"mass M, dashpot speed V": entry}"""
+    checks = {}
+    every_piston = pistons(out)
+    for piston in every_piston if len(every_piston) > 1 else []:
+        every = [sample_results(path) for key, path in samples(out, piston).items()
+                 if key[0] == 1e-4 and key[1] == 25]
+        at = [r for r in every if r["at_rest"]]
+        entry = {"samples": f"{len(at)} of {len(every)} at rest"}
+        if not at:
+            checks[f"mass {piston[0]}, dashpot speed {piston[1]}"] = entry
+            continue
+        for key in sound.CHECKS + ("overshoot", "packing_steps"):
+            if all(key in r for r in at):
+                entry[key] = mean_standard_error([r[key] for r in at])
+        checks[f"mass {piston[0]}, dashpot speed {piston[1]}"] = entry
+    return checks
+
+
+def overshoots(per_sample):
+    """(p_peak / p, sigma1/sigma2, pressure) of every packing with an overshoot"""
+    return [(r["overshoot"], r["sigma1_over_sigma2"], q) for (q, _, _), r in per_sample.items() if "overshoot" in r]
+
+
+def pressures_of(per_sample):
+    """The pressures of the samples, in order"""
+    return sorted({p for p, _, _ in per_sample})
+
+
+def speed_pressures(results, pressures):
+    """The pressures with a time-of-flight speed"""
+    return [p for p in pressures if "c_tof_t10" in results["pressures"][f"{p:g}"]]
+
+
+def collect_results(out, per_sample, off_target, not_at_rest):
+    """The dict of results.json: each sample, the samples left out, the
+    entry of each pressure (pressure_entry), the exponents of the speeds
+    against the pressure, the 1D chain of out/chain, the correlation of the
+    stress ratio with the overshoot, the heights at p = 1e-4, the checks
+    beside Table I and those of the pistons"""
+    pressures = pressures_of(per_sample)
+    results = {"samples": {f"p{p:g}_H{H}_s{s}": r for (p, H, s), r in per_sample.items()},
+               "off_target": off_target, "not_at_rest": not_at_rest, "pressures": {}}
+    for p in pressures:
+        results["pressures"][f"{p:g}"] = pressure_entry(per_sample, p)
+
+    # c_tof ~ p^x
+    with_speed = speed_pressures(results, pressures)
+    if len(with_speed) >= 2:
+        x, _ = sound.power_law_fit(with_speed, [results["pressures"][f"{p:g}"]["c_tof_t10"][0]
+                                                 for p in with_speed])
+        results["c_tof_exponent"] = x
+    for key in ("c_l", "c_t"):
+        with_speed_key = [p for p in pressures if key in results["pressures"][f"{p:g}"]]
+        if len(with_speed_key) >= 2:
+            x, _ = sound.power_law_fit(with_speed_key, [results["pressures"][f"{p:g}"][key] for p in with_speed_key])
+            results[f"{key}_exponent"] = x
+            results[f"{key}_exponent_pressures"] = with_speed_key
+
+    chain_dir = os.path.join(out, "chain")
+    if os.path.isdir(chain_dir):
+        chain = chain_results(chain_dir)
+        results["chain"] = chain
+        for condition in ("A", "B"):
+            c = chain[condition]
+            if len(c["N"]) >= 2:
+                _, g = sound.effective_exponents(c["N"], c["amplitude"])
+                _, a = sound.effective_exponents(c["N"], c["rise"])
+                c["gamma_eff"] = list(-g)
+                c["alpha_eff"] = list(a)
+
+    # the stress ratio of every packing against the overshoot of its compression
+    with_overshoot = overshoots(per_sample)
+    if len(with_overshoot) >= 3:
+        overshoot, ratio, _ = zip(*with_overshoot)
+        results["log_overshoot_stress_ratio_correlation"] = float(np.corrcoef(np.log(overshoot), ratio)[0, 1])
+
+    series = height_series(per_sample, 1e-4)
+    if series:
+        results["disordered_1e-4"] = series
+
+    results["checks"] = checks_table(per_sample, pressures)
+    # the same checks for every piston (mass, dashpot speed) at p = 1e-4, H = 25
+    results["pistons"] = piston_checks(out)
+    return results
+
+
+def _cell(entry, key, fmt="{:.3g}"):
+    """entry[key] formatted: "mean ± s.d." of a pair, a string as it is, a
+    dash when missing"""
+    if key not in entry:
+        return "-"
+    value = entry[key]
+    if isinstance(value, (list, tuple)):
+        return (fmt + " ± " + fmt).format(*value)
+    if isinstance(value, str):
+        return value
+    return fmt.format(value)
+
+
+def _paper_cell(value):
+    """a value of the paper's tables: "mean ± s.d.", or the mean alone"""
+    mean, spread = value
+    return f"{mean:g}" + (f" ± {spread:g}" if spread is not None else "")
+
+
+def _table_head(titles, columns):
+    """title lines, a blank line, the header and separator of a markdown table"""
+    return titles + ["", "| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+
+
+def tables(results, pressures):
+    """The text of tables.md: Table I beside the paper's, the acceptance
+    checks, the pistons, Table II, the DEM over the network moduli, the
+    speeds and the coherent peak, the packings left out, the exponents"""
+    series = results.get("disordered_1e-4")
+    lines = _table_head(["Table I (bulk of the H = 25 packings; paper: 30 samples per pressure)"],
+                        ["p", "source", "samples", "Φ2", "Φ3", "Φ3*", "z*", "f0", "⟨N⟩/p", "Z(2)", "Z(3)", "F2",
+                         "F2^S"])
+    for p in pressures:
+        e = results["pressures"][f"{p:g}"]
+        if p in sound.PAPER_TABLE_I:
+            lines.append(f"| {p:g} | paper 003 (2D) | 30 | " + " | ".join(
+                _paper_cell(sound.PAPER_TABLE_I[p][k]) for k in
+                ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3", "F2",
+                 "F2_strong")) + " |")
+        lines.append(f"| {p:g} | ACOUSTIC | {e['tall_samples']} | " + " | ".join(
+            _cell(e, k) for k in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3",
+                                  "F2", "F2_strong")) + " |")
+    lines.append("")
+    lines += _table_head(["Acceptance checks of the H = 25 packings: ours mean ± standard error, the paper's mean",
+                          "(± its standard deviation), and how many of our standard errors lie between them",
+                          "(σ1/σ2: bulk contact virial of the packing at rest; paper: Table II)"],
+                         ["p", "check", "samples", "ACOUSTIC", "paper 003", "|Δ| / s.e."])
+    for row in results["checks"]:
+        lines.append(f"| {row['p']:g} | {row['key']} | {row['samples']} | {row['mean']:.4g} ± "
+                     f"{row['standard_error']:.2g} | {_paper_cell((row['paper'], row['paper_sd']))} | "
+                     f"{row['standard_errors_off']:.1f} |")
+    lines.append("")
+    if results["pistons"]:
+        columns = list(sound.CHECKS) + ["overshoot", "packing_steps"]
+        lines += _table_head(["The piston (mass in units of the grains', dashpot speed: 0 = free): checks of the",
+                              "H = 25 packings at p = 1e-4, mean ± standard error; "
+                              "overshoot = p_peak / p at the checks"],
+                             ["piston", "samples"] + columns)
+        for name, entry in results["pistons"].items():
+            lines.append(f"| {name} | {entry['samples']} | " + " | ".join(
+                f"{entry[k][0]:.4g} ± {entry[k][1]:.2g}" if k in entry else "-" for k in columns) + " |")
+        lines.append("")
+    lines += _table_head(["Table II (H = 25 packings whose response stayed linear; mean ± standard deviation;",
+                          "moduli samples: linear in compression and stretch / in shear)"],
+                         ["p", "source", "σ1/σ2", "p_peak/p", "moduli samples", "C11", "C12", "C12 (from ε11)", "C22",
+                          "C33"])
+    for p in pressures:
+        e = results["pressures"][f"{p:g}"]
+        if p in PAPER_TABLE_II:
+            ratio, c11, c12, c22, c33 = PAPER_TABLE_II[p]
+            lines.append(f"| {p:g} | paper 003 (2D) | {ratio} | - | 30 | {c11} | {c12} | - | {c22} | {c33} |")
+        lines.append(f"| {p:g} | ACOUSTIC | " + " | ".join(_cell(e, k) for k in (
+            "sigma1_over_sigma2", "overshoot", "moduli_samples", "C11", "C12", "C12_from_eps11", "C22", "C33")) + " |")
+        if "C22_network" in e:
+            lines.append(f"| {p:g} | ACOUSTIC, network | - | - | {e['tall_samples']} | - | - | - | "
+                         f"{_cell(e, 'C22_network')} | {_cell(e, 'C33_network')} |")
+    lines.append("")
+    lines += _table_head(["DEM moduli over network moduli, packing by packing (where the DEM response stayed linear)"],
+                         ["p", "C22 (DEM / network)", "C33 (DEM / network)"])
+    for p in pressures:
+        e = results["pressures"][f"{p:g}"]
+        lines.append(f"| {p:g} | {_cell(e, 'C22_dem_over_network')} | {_cell(e, 'C33_dem_over_network')} |")
+    lines.append("")
+    lines += _table_head(["Speeds and the coherent peak (c_tof from the H = 8 and H = 25 packings of each seed)"],
+                         ["p", "pairs", "c_tof (10 %)", "c_tof (peak)", "c_tof (zero)", "c_ℓ", "c_t", "c_tof/c_ℓ",
+                          "paper c_ℓ (Table II)", "γ (L 8-25)", "α (L 8-25)"])
+    for p in pressures:
+        e = results["pressures"][f"{p:g}"]
+        paper_c_l = "-"
+        if p in PAPER_TABLE_II:
+            paper_c_l = f"{math.sqrt(PAPER_C22_PHI3STAR[p][0] / PAPER_C22_PHI3STAR[p][1]):.3g}"
+        lines.append(f"| {p:g} | {e['samples']} | " + " | ".join(_cell(e, k) for k in (
+            "c_tof_t10", "c_tof_t_peak", "c_tof_t_zero", "c_l", "c_t", "c_tof_over_c_l")) +
+            f" | {paper_c_l} | " + " | ".join(_cell(e, k) for k in ("gamma", "alpha")) + " |")
+    lines.append("")
+    lines.append(f"packings left out (final pressure more than 5 % from the target): {results['off_target'] or 'none'}")
+    lines.append(f"packings left out (not at rest within the deck's max_checks): {results['not_at_rest'] or 'none'}")
+    if "log_overshoot_stress_ratio_correlation" in results:
+        lines.append("")
+        lines.append("correlation of sigma1/sigma2 with log(p_peak/p) over all packings: "
+                     f"{results['log_overshoot_stress_ratio_correlation']:.3f}")
+    if "c_tof_exponent" in results:
+        lines.append("")
+        lines.append(f"c_tof ∝ p^x with x = {results['c_tof_exponent']:.4f} (paper: 1/6 = 0.1667)")
+        for key, paper in (("c_l", "0.18"), ("c_t", "0.23")):
+            if f"{key}_exponent" in results:
+                lines.append(f"{key} ∝ p^x with x = {results[key + '_exponent']:.3f} over p = "
+                             f"{results[key + '_exponent_pressures']} (paper: {paper})")
+    if "chain" in results:
+        for condition in ("A", "B"):
+            c = results["chain"][condition]
+            if "gamma_eff" in c:
+                lines.append(f"chain {condition}: N {c['N']}, gamma_eff {np.round(c['gamma_eff'], 3).tolist()}, "
+                             f"alpha_eff (rise time) {np.round(c['alpha_eff'], 3).tolist()}")
+    if series:
+        lines.append(f"p = 1e-4, condition A, heights: H {series['H']}, samples {series['samples']}, "
+                     f"L {np.round(series['L'], 2).tolist()}, gamma_eff {np.round(series['gamma_eff'], 3).tolist()}, "
+                     f"alpha_eff {np.round(series['alpha_eff'], 3).tolist()}")
+    return "\n".join(lines)
+
+
+def figures(results, per_sample, found, figdir):
+    """Paper 003's Figs. 4, 6, 7, 8 and 9 and sigma1/sigma2 against the
+    overshoot (sound_figures) into figdir, from the results of
+    collect_results, the sample_results of the samples (per_sample) and
+    their directories (found)"""
+    at = {key: r for key, r in per_sample.items() if key[0] == 1e-4}
+    tall = [(key, r) for key, r in at.items() if key[1] == 25]
+    if tall:
+        signals = [sound.read_pulse(os.path.join(found[key], "pulse_A.dat")) for key, _ in tall]
+        sound_figures.fig4_signals(signals, sound.ensemble(signals), os.path.join(figdir, "fig4_signal_p1e-4.png"),
+                                   "p = 1e-4, L ≈ 25, initial condition A")
+        first = tall[0][0]
+        modes = lammps_output.read_ave_time_vector(os.path.join(found[first], "modes.dat"))[-1][1][:, 0]
+        sound_figures.fig9_spectrum(modes, os.path.join(figdir, "fig9_spectrum_p1e-4.png"),
+                                    "p = 1e-4, L ≈ 25 (rattlers: zero modes)")
+    if at:
+        keys = sorted(at)
+        sound_figures.fig6_arrival_times([at[k]["h"] for k in keys], [at[k]["t10_A"] for k in keys],
+                                         [at[k]["t_peak_A"] for k in keys], [at[k]["t_zero_A"] for k in keys],
+                                         os.path.join(figdir, "fig6_arrival_p1e-4.png"), "p = 1e-4")
+    with_speed = speed_pressures(results, pressures_of(per_sample))
+    if with_speed:
+        e = [results["pressures"][f"{p:g}"] for p in with_speed]
+        sound_figures.fig8_speeds(with_speed, [x["c_tof_t10"][0] for x in e], [x["c_tof_t10"][1] for x in e],
+                                  [x.get("c_l", np.nan) for x in e], [x.get("c_t", np.nan) for x in e],
+                                  os.path.join(figdir, "fig8_speeds.png"))
+    curves = {}
+    if "chain" in results:
+        for condition in ("A", "B"):
+            c = results["chain"][condition]
+            if len(c["N"]) >= 2:
+                curves[f"1D chain, {condition}"] = (c["N"], c["amplitude"], c["rise"])
+    if "disordered_1e-4" in results:
+        d = results["disordered_1e-4"]
+        curves["disordered packings, p = 1e-4, A"] = (d["L"], d["amplitude"], d["width"])
+    with_overshoot = overshoots(per_sample)
+    if with_overshoot:
+        sound_figures.stress_ratio_against_overshoot(*zip(*with_overshoot),
+                                                     os.path.join(figdir, "stress_ratio_overshoot.png"))
+    if curves:
+        sound_figures.fig7_exponents(curves, os.path.join(figdir, "fig7_exponents.png"))
+
+
+def collect(out, figdir):
+    """What collect.py does: results.json and tables.md into out, the
+    tables on stdout, the figures into figdir"""
+    os.makedirs(figdir, exist_ok=True)
+    found, per_sample, off_target, not_at_rest = usable_samples(out)
+    results = collect_results(out, per_sample, off_target, not_at_rest)
+    with open(os.path.join(out, "results.json"), "w") as handle:
+        json.dump(results, handle, indent=1, default=float)
+    text = tables(results, pressures_of(per_sample))
+    with open(os.path.join(out, "tables.md"), "w") as handle:
+        handle.write(text + "\n")
+    print(text)
+    figures(results, per_sample, found, figdir)
