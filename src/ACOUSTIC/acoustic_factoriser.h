@@ -1,3 +1,16 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: one interface for the sparse factorisations
    of the Helmholtz solver.
@@ -13,7 +26,7 @@
      lu     UMFPACK LU with partial pivoting, on the calling rank
      ldlt   CHOLMOD simplicial LDL^T without pivoting, real only
    make_factoriser() builds the one a LinearSolverChoice names (auto is
-   mumps), or returns nullptr where there is none (ldlt, complex).
+   mumps, or lu in a build without MUMPS), or returns nullptr where there is none (ldlt, complex).
 ------------------------------------------------------------------------- */
 
 #ifndef ACOUSTIC_FACTORISER_H

@@ -1,4 +1,17 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    ACOUSTIC package numerics: sparse symmetric LDL^T factorisation with
    MUMPS, on one or several MPI ranks.
 ------------------------------------------------------------------------- */
@@ -7,11 +20,13 @@
 
 #include "acoustic_solver_error.h"
 
+#ifdef ACOUSTIC_HAVE_MUMPS
 #include <dmumps_c.h>
 #include <zmumps_c.h>
 
 #ifdef ACOUSTIC_HAVE_METIS
 #include <metis.h>
+#endif
 #endif
 
 #include <cstdint>
@@ -22,103 +37,121 @@ namespace Acoustic {
 
 namespace {
 
-enum MumpsJob { JOB_INIT = -1, JOB_END = -2, JOB_ANALYSE = 1, JOB_FACTORISE = 2, JOB_SOLVE = 3 };
-const int RELEASE = -1;    // order: leave serve()
-
-// MUMPS's C structures and entry points per scalar type
-template <typename Scalar> struct MumpsApi;
-template <> struct MumpsApi<double> {
-  typedef DMUMPS_STRUC_C Struct;
-  typedef double Entry;
-  static void call(Struct *s) { dmumps_c(s); }
-};
-template <> struct MumpsApi<std::complex<double>> {
-  typedef ZMUMPS_STRUC_C Struct;
-  typedef mumps_double_complex Entry;    // same layout as std::complex<double>
-  static void call(Struct *s) { zmumps_c(s); }
-};
-
-// ICNTL(k), CNTL(k) and INFOG(k) with MUMPS's 1-based numbering
-template <typename Struct> MUMPS_INT &icntl(Struct &s, int k)
-{
-  return s.icntl[k - 1];
-}
-template <typename Struct> auto &cntl(Struct &s, int k)
-{
-  return s.cntl[k - 1];
-}
-template <typename Struct> MUMPS_INT infog(const Struct &s, int k)
-{
-  return s.infog[k - 1];
-}
-
-std::string mumps_error(int code, int detail)
-{
-  std::string what;
-  switch (code) {
-    case -5:
-    case -7:
-    case -13:
-      what = "not enough memory";
-      break;
-    case -8:
-    case -9:
-    case -14:
-    case -15:
-      what = "internal work arrays too small";
-      break;
-    case -10:
-      what = "numerically singular matrix";
-      break;
-    default:
-      what = "see the MUMPS user guide";
-      break;
-  }
-  return "MUMPS error INFOG(1) = " + std::to_string(code) + ", INFOG(2) = " + std::to_string(detail) +
-      " (" + what + ")";
-}
-
-// The pivot order of a symmetric matrix (lower triangle given as 1-based
-// rows and columns, diagonal included) by METIS's nested dissection:
-// position (1-based) of each variable, as MUMPS's PERM_IN wants it.
-std::vector<int> nested_dissection_order(int n, const std::vector<int> &rows, const std::vector<int> &cols)
-{
-#ifdef ACOUSTIC_HAVE_METIS
-  // the adjacency of the graph (both directions, no self loops), in CSR
-  std::vector<idx_t> degree(n + 1, 0);
-  for (std::size_t k = 0; k < rows.size(); ++k)
-    if (rows[k] != cols[k]) {
-      ++degree[rows[k]];
-      ++degree[cols[k]];
-    }
-  std::vector<idx_t> xadj(n + 1, 0);
-  for (int v = 0; v < n; ++v) xadj[v + 1] = xadj[v] + degree[v + 1];
-  std::vector<idx_t> fill(xadj.begin(), xadj.end() - 1), adjncy(xadj[n]);
-  for (std::size_t k = 0; k < rows.size(); ++k)
-    if (rows[k] != cols[k]) {
-      adjncy[fill[rows[k] - 1]++] = cols[k] - 1;
-      adjncy[fill[cols[k] - 1]++] = rows[k] - 1;
-    }
-  idx_t nvertices = n;
-  std::vector<idx_t> perm(n), iperm(n);
-  idx_t options[METIS_NOPTIONS];
-  METIS_SetDefaultOptions(options);
-  options[METIS_OPTION_NUMBERING] = 0;
-  const int status =
-      METIS_NodeND(&nvertices, xadj.data(), adjncy.data(), nullptr, options, perm.data(), iperm.data());
-  if (status != METIS_OK) throw SolverError("METIS_NodeND failed (status " + std::to_string(status) + ")");
-  std::vector<int> position(n);
-  for (int v = 0; v < n; ++v) position[v] = static_cast<int>(iperm[v]) + 1;
-  return position;
-#else
-  (void) n;
-  (void) rows;
-  (void) cols;
-  throw SolverError("the METIS ordering needs an ACOUSTIC package built with METIS");
-#endif
-}
+  const int RELEASE = -1;    // order: leave serve()
 
 }    // namespace
+
+#ifdef ACOUSTIC_HAVE_MUMPS
+namespace {
+
+  enum MumpsJob { JOB_INIT = -1, JOB_END = -2, JOB_ANALYSE = 1, JOB_FACTORISE = 2, JOB_SOLVE = 3 };
+
+  // MUMPS's C structures and entry points per scalar type
+  template <typename Scalar> struct MumpsApi;
+  template <> struct MumpsApi<double> {
+    typedef DMUMPS_STRUC_C Struct;
+    typedef double Entry;
+    static void call(Struct *s) { dmumps_c(s); }
+  };
+  template <> struct MumpsApi<std::complex<double>> {
+    typedef ZMUMPS_STRUC_C Struct;
+    typedef mumps_double_complex Entry;    // same layout as std::complex<double>
+    static void call(Struct *s) { zmumps_c(s); }
+  };
+
+  // ICNTL(k), CNTL(k) and INFOG(k) with MUMPS's 1-based numbering
+  template <typename Struct> MUMPS_INT &icntl(Struct &s, int k)
+  {
+    return s.icntl[k - 1];
+  }
+  template <typename Struct> auto &cntl(Struct &s, int k)
+  {
+    return s.cntl[k - 1];
+  }
+  template <typename Struct> MUMPS_INT infog(const Struct &s, int k)
+  {
+    return s.infog[k - 1];
+  }
+
+  std::string mumps_error(int code, int detail)
+  {
+    std::string what;
+    switch (code) {
+      case -5:
+      case -7:
+      case -13:
+        what = "not enough memory";
+        break;
+      case -8:
+      case -9:
+      case -14:
+      case -15:
+        what = "internal work arrays too small";
+        break;
+      case -10:
+        what = "numerically singular matrix";
+        break;
+      default:
+        what = "see the MUMPS user guide";
+        break;
+    }
+    return "MUMPS error INFOG(1) = " + std::to_string(code) +
+        ", INFOG(2) = " + std::to_string(detail) + " (" + what + ")";
+  }
+
+  // The pivot order of a symmetric matrix (lower triangle given as 1-based
+  // rows and columns, diagonal included) by METIS's nested dissection:
+  // position (1-based) of each variable, as MUMPS's PERM_IN wants it.
+  std::vector<int> nested_dissection_order(int n, const std::vector<int> &rows,
+                                           const std::vector<int> &cols)
+  {
+#ifdef ACOUSTIC_HAVE_METIS
+    // the adjacency of the graph (both directions, no self loops), in CSR
+    std::vector<idx_t> degree(n + 1, 0);
+    for (std::size_t k = 0; k < rows.size(); ++k)
+      if (rows[k] != cols[k]) {
+        ++degree[rows[k]];
+        ++degree[cols[k]];
+      }
+    std::vector<idx_t> xadj(n + 1, 0);
+    for (int v = 0; v < n; ++v) xadj[v + 1] = xadj[v] + degree[v + 1];
+    std::vector<idx_t> fill(xadj.begin(), xadj.end() - 1), adjncy(xadj[n]);
+    for (std::size_t k = 0; k < rows.size(); ++k)
+      if (rows[k] != cols[k]) {
+        adjncy[fill[rows[k] - 1]++] = cols[k] - 1;
+        adjncy[fill[cols[k] - 1]++] = rows[k] - 1;
+      }
+    idx_t nvertices = n;
+    std::vector<idx_t> perm(n), iperm(n);
+    idx_t options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    options[METIS_OPTION_NUMBERING] = 0;
+    const int status = METIS_NodeND(&nvertices, xadj.data(), adjncy.data(), nullptr, options,
+                                    perm.data(), iperm.data());
+    if (status != METIS_OK)
+      throw SolverError("METIS_NodeND failed (status " + std::to_string(status) + ")");
+    std::vector<int> position(n);
+    for (int v = 0; v < n; ++v) position[v] = static_cast<int>(iperm[v]) + 1;
+    return position;
+#else
+    (void) n;
+    (void) rows;
+    (void) cols;
+    throw SolverError("the METIS ordering needs an ACOUSTIC package built with METIS");
+#endif
+  }
+
+}    // namespace
+#endif
+
+bool mumps_available()
+{
+#ifdef ACOUSTIC_HAVE_MUMPS
+  return true;
+#else
+  return false;
+#endif
+}
 
 MumpsOrdering mumps_ordering_from_name(const std::string &name)
 {
@@ -163,6 +196,7 @@ class MumpsInstance {
   int number_;
 };
 
+#ifdef ACOUSTIC_HAVE_MUMPS
 template <typename Scalar> class MumpsInstanceOf : public MumpsInstance {
  public:
   typedef MumpsApi<Scalar> Api;
@@ -197,6 +231,8 @@ template <typename Scalar> class MumpsInstanceOf : public MumpsInstance {
   typename Api::Struct data;
   bool initialised = false;
 };
+
+#endif
 
 /* ---------------------------------------------------------------------- */
 
@@ -247,14 +283,16 @@ void MumpsTeam::release()
   MPI_Bcast(message, 2, MPI_INT, 0, comm_);
 }
 
+#ifdef ACOUSTIC_HAVE_MUMPS
 /* ---------------------------------------------------------------------- */
 
 namespace {
 
-template <typename Scalar> MumpsInstanceOf<Scalar> &instance_of(const std::unique_ptr<MumpsInstance> &p)
-{
-  return static_cast<MumpsInstanceOf<Scalar> &>(*p);
-}
+  template <typename Scalar>
+  MumpsInstanceOf<Scalar> &instance_of(const std::unique_ptr<MumpsInstance> &p)
+  {
+    return static_cast<MumpsInstanceOf<Scalar> &>(*p);
+  }
 
 }    // namespace
 
@@ -265,7 +303,8 @@ MumpsLdlt<Scalar>::MumpsLdlt(MumpsTeam &team, const MumpsSettings &settings) :
   if (settings.ordering == MumpsOrdering::Metis && !metis_available())
     throw SolverError("MUMPS ordering metis: this build of the ACOUSTIC package has no METIS "
                       "(Debian: libmetis-dev); use ordering auto");
-  if (settings.low_rank && !(settings.low_rank_tolerance > 0.0 && settings.low_rank_tolerance < 1.0))
+  if (settings.low_rank &&
+      !(settings.low_rank_tolerance > 0.0 && settings.low_rank_tolerance < 1.0))
     throw SolverError("MUMPS block low-rank tolerance must be in (0, 1), got " +
                       std::to_string(settings.low_rank_tolerance));
 }
@@ -343,8 +382,10 @@ template <typename Scalar> void MumpsLdlt<Scalar>::factorise(bool everyone)
 {
   MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
   for (int attempt = 0;; ++attempt) {
-    if (everyone) m.call(JOB_FACTORISE);
-    else m.run(JOB_FACTORISE);
+    if (everyone)
+      m.call(JOB_FACTORISE);
+    else
+      m.run(JOB_FACTORISE);
     const int code = infog(m.data, 1);
     if ((code == -8 || code == -9 || code == -14 || code == -15) && attempt < 6) {
       icntl(m.data, 14) = 2 * icntl(m.data, 14) + 20;
@@ -388,7 +429,8 @@ template <typename Scalar> void MumpsLdlt<Scalar>::solve_in_place(Dense &x) cons
 ------------------------------------------------------------------------- */
 
 template <typename Scalar>
-void MumpsLdlt<Scalar>::analyze_distributed(long n, const std::vector<long> &rows, const std::vector<long> &cols,
+void MumpsLdlt<Scalar>::analyze_distributed(long n, const std::vector<long> &rows,
+                                            const std::vector<long> &cols,
                                             const std::vector<Scalar> &values)
 {
   MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
@@ -416,12 +458,14 @@ void MumpsLdlt<Scalar>::analyze_distributed(long n, const std::vector<long> &row
   take_status(false);
 }
 
-template <typename Scalar> void MumpsLdlt<Scalar>::factorize_distributed(const std::vector<Scalar> &values)
+template <typename Scalar>
+void MumpsLdlt<Scalar>::factorize_distributed(const std::vector<Scalar> &values)
 {
   MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
   if (!m.initialised || values.size() != values_.size()) {
     info_ = Eigen::InvalidInput;
-    message_ = "MumpsLdlt: factorize_distributed() needs the entries given to analyze_distributed()";
+    message_ =
+        "MumpsLdlt: factorize_distributed() needs the entries given to analyze_distributed()";
     return;
   }
   values_ = values;
@@ -433,7 +477,8 @@ template <typename Scalar> void MumpsLdlt<Scalar>::solve_distributed(Dense &x) c
 {
   MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
   const bool host = m.team().host();
-  int usable = (info_ == Eigen::Success && m.initialised && (!host || x.rows() == m.data.n)) ? 1 : 0;
+  int usable = (info_ == Eigen::Success && m.initialised && (!host || x.rows() == m.data.n)) ? 1
+                                                                                             : 0;
   MPI_Allreduce(MPI_IN_PLACE, &usable, 1, MPI_INT, MPI_MIN, m.team().comm());
   if (!usable) {
     if (host) x.setConstant(Scalar(std::numeric_limits<double>::quiet_NaN()));
@@ -469,8 +514,49 @@ template <typename Scalar> double MumpsLdlt<Scalar>::factorisation_flops() const
   const MumpsInstanceOf<Scalar> &m = instance_of<Scalar>(instance_);
   if (!m.initialised) return 0.0;
   // RINFOG(14): the operations done with low-rank blocks; RINFOG(3): full rank
-  return settings_.low_rank ? static_cast<double>(m.data.rinfog[13]) : static_cast<double>(m.data.rinfog[2]);
+  return settings_.low_rank ? static_cast<double>(m.data.rinfog[13])
+                            : static_cast<double>(m.data.rinfog[2]);
 }
+
+#else    // no MUMPS: the solver says so when asked for
+
+template <typename Scalar>
+MumpsLdlt<Scalar>::MumpsLdlt(MumpsTeam &, const MumpsSettings &settings) : settings_(settings)
+{
+  throw SolverError("MUMPS: this build of the ACOUSTIC package has no MUMPS (Debian: "
+                    "libmumps-dev; CMake: ACOUSTIC_WITH_MUMPS=on); use solver lu or ldlt, or "
+                    "iterative for damped networks");
+}
+template <typename Scalar> MumpsLdlt<Scalar>::~MumpsLdlt() = default;
+template <typename Scalar> void MumpsLdlt<Scalar>::analyzePattern(const MatrixType &) {}
+template <typename Scalar> void MumpsLdlt<Scalar>::factorize(const MatrixType &) {}
+template <typename Scalar> void MumpsLdlt<Scalar>::factorise(bool) {}
+template <typename Scalar> void MumpsLdlt<Scalar>::take_status(bool) {}
+template <typename Scalar> void MumpsLdlt<Scalar>::solve_in_place(Dense &) const {}
+template <typename Scalar>
+void MumpsLdlt<Scalar>::analyze_distributed(long, const std::vector<long> &,
+                                            const std::vector<long> &, const std::vector<Scalar> &)
+{
+}
+template <typename Scalar>
+void MumpsLdlt<Scalar>::factorize_distributed(const std::vector<Scalar> &)
+{
+}
+template <typename Scalar> void MumpsLdlt<Scalar>::solve_distributed(Dense &) const {}
+template <typename Scalar> long MumpsLdlt<Scalar>::factor_entries() const
+{
+  return 0;
+}
+template <typename Scalar> double MumpsLdlt<Scalar>::local_factorisation_flops() const
+{
+  return 0.0;
+}
+template <typename Scalar> double MumpsLdlt<Scalar>::factorisation_flops() const
+{
+  return 0.0;
+}
+
+#endif
 
 template class MumpsLdlt<double>;
 template class MumpsLdlt<std::complex<double>>;

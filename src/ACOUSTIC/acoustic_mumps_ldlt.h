@@ -1,3 +1,16 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: sparse symmetric LDL^T factorisation with
    MUMPS, on one or several MPI ranks.
@@ -53,6 +66,9 @@ MumpsOrdering mumps_ordering_from_name(const std::string &name);
 std::string mumps_ordering_name(MumpsOrdering ordering);
 // true when the package is built with METIS
 bool metis_available();
+// whether the package was built with MUMPS (without it MumpsLdlt's
+// constructor throws a SolverError that says so)
+bool mumps_available();
 
 struct MumpsSettings {
   MumpsOrdering ordering = MumpsOrdering::Auto;
@@ -83,7 +99,7 @@ class MumpsTeam {
   friend class MumpsInstance;
   int attach(MumpsInstance *instance);    // its number in the orders
   void detach(int number);
-  void order(int number, int job);        // host: workers run `job` of instance `number`
+  void order(int number, int job);    // host: workers run `job` of instance `number`
 
   MPI_Comm comm_;
   int rank_ = 0, size_ = 1;

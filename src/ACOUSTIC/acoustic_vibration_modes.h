@@ -1,3 +1,16 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: eigenmodes K v = omega^2 M v of a network.
 
@@ -39,6 +52,9 @@ namespace Acoustic {
 
 enum class ModeMethod { Dense, Lanczos, Kpm };
 
+// whether the package was built with Spectra (method lanczos)
+bool lanczos_available();
+
 // "dense", "lanczos" or "kpm"; throws SolverError listing the allowed names otherwise.
 ModeMethod mode_method_from_name(const std::string &name);
 std::string mode_method_name(ModeMethod method);
@@ -46,9 +62,9 @@ std::string mode_method_name(ModeMethod method);
 const double default_zero_mode_tolerance = 1e-8;
 
 struct VibrationModes {
-  Eigen::VectorXd eigenvalues;             // lambda = omega^2, ascending
-  Eigen::VectorXd frequencies;             // f = sqrt(max(lambda, 0)) / (2 pi), same order
-  Eigen::MatrixXd shapes;                  // one mass-normalised DOF-space column per mode (if requested)
+  Eigen::VectorXd eigenvalues;    // lambda = omega^2, ascending
+  Eigen::VectorXd frequencies;    // f = sqrt(max(lambda, 0)) / (2 pi), same order
+  Eigen::MatrixXd shapes;         // one mass-normalised DOF-space column per mode (if requested)
   Eigen::VectorXd participation_ratios;    // one per mode (if shapes were requested)
   int zero_modes = 0;                      // number of zero modes of the free DOFs
 };

@@ -59,28 +59,30 @@ static constexpr double RESTART_WITH_SIGNATURE = -2.0;
 static constexpr double RESTART_WITH_ITERATIONS = -3.0;
 static constexpr int NVECTOR_BEFORE_ITERATIONS = 14;
 
-
 /* ---------------------------------------------------------------------- */
 
 FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), source_groupbit(0), source_wall(-1), direction_axis(-1), direction_given(false), source_mode(ALL),
-    solver_choice(Acoustic::LinearSolverChoice::Auto), reuse(false), ordering_given(false), ndof(0), damped(0),
-    last_update(-1),
-    factors_committed(true), atoms_at_end(0), settings_signature(0), restart_settings_differ(false), q_atom(nullptr),
-    q_restored(false), amplitude_atom(nullptr), contact_array(nullptr), ncontact_rows(0), maxcontact_rows(0),
-    last_solution_valid(false), warned_idle_source(false), solved_network(0), unchanged_networks(0),
-    comm_mode(COMM_AMPLITUDES), halo_width(0)
+    Fix(lmp, narg, arg), source_groupbit(0), source_wall(-1), direction_axis(-1),
+    direction_given(false), source_mode(ALL), solver_choice(Acoustic::LinearSolverChoice::Auto),
+    reuse(false), ordering_given(false), ndof(0), damped(0), last_update(-1),
+    factors_committed(true), atoms_at_end(0), settings_signature(0), restart_settings_differ(false),
+    q_atom(nullptr), q_restored(false), amplitude_atom(nullptr), contact_array(nullptr),
+    ncontact_rows(0), maxcontact_rows(0), last_solution_valid(false), warned_idle_source(false),
+    solved_network(0), unchanged_networks(0), comm_mode(COMM_AMPLITUDES), halo_width(0)
 {
   if (lmp->citeme) lmp->citeme->add(AcousticCitations::two_time_scale_model);
   if (narg < 10)
-    error->all(FLERR, "{}: expected fix ID group-ID acoustic/mindlin N "
-                      "frequency f amplitude U0 source group-ID [keyword value ...]", CMD);
+    error->all(FLERR,
+               "{}: expected fix ID group-ID acoustic/mindlin N "
+               "frequency f amplitude U0 source group-ID [keyword value ...]",
+               CMD);
 
   // the words after the fix ID, as given: a restart file written with other
   // ones holds factors of another drive
   Fingerprint signature;
   for (int k = 1; k < narg; k++) {
-    for (const char *c = arg[k]; *c; c++) signature.mix(static_cast<std::uint64_t>(static_cast<unsigned char>(*c)));
+    for (const char *c = arg[k]; *c; c++)
+      signature.mix(static_cast<std::uint64_t>(static_cast<unsigned char>(*c)));
     signature.mix(static_cast<std::uint64_t>(0));
   }
   settings_signature = signature.value();
@@ -90,11 +92,13 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
   CommandArguments args(lmp, CMD, narg, arg, 4);
   args.expect("frequency", 1);
   frequency = args.number(1);
-  if (frequency < 0.0) args.reject(FLERR, 1, "frequency must be >= 0 (1/time units), got {}", frequency);
+  if (frequency < 0.0)
+    args.reject(FLERR, 1, "frequency must be >= 0 (1/time units), got {}", frequency);
   args.next();
   args.expect("amplitude", 1);
   amplitude = args.number(1);
-  if (amplitude < 0.0) args.reject(FLERR, 1, "amplitude must be >= 0 (distance units), got {}", amplitude);
+  if (amplitude < 0.0)
+    args.reject(FLERR, 1, "amplitude must be >= 0 (distance units), got {}", amplitude);
   args.next();
   args.expect("source", 1);
   if (strcmp(args.word(1), "wall") == 0) {
@@ -113,8 +117,10 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
 
   damped = (settings.damping_ratio > 0.0);
   if (damped && solver_choice == Acoustic::LinearSolverChoice::Ldlt)
-    error->all(FLERR, "{}: solver ldlt handles undamped (real symmetric) problems "
-                      "only; use solver lu or auto with damping", CMD);
+    error->all(FLERR,
+               "{}: solver ldlt handles undamped (real symmetric) problems "
+               "only; use solver lu or auto with damping",
+               CMD);
 
   ndof = Acoustic::dofs_per_grain(dim, settings.model);
   const bool iterative = (solver_choice == Acoustic::LinearSolverChoice::Iterative);
@@ -156,15 +162,18 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
       krylov.reset(new Acoustic::KrylovHelmholtzSolver(world, krylov_settings));
     } else if (solver_choice == Acoustic::LinearSolverChoice::Mumps) {
       if (mumps_settings.ordering == Acoustic::MumpsOrdering::Metis)
-        error->all(FLERR, "{}: ordering metis needs the network on one rank; solver "
-                          "mumps orders with MUMPS's own choice: use solver auto for METIS", CMD);
+        error->all(FLERR,
+                   "{}: ordering metis needs the network on one rank; solver "
+                   "mumps orders with MUMPS's own choice: use solver auto for METIS",
+                   CMD);
       mumps.reset(new Acoustic::DistributedMumpsSolver(world, mumps_settings, 1e-6));
     } else {
       // nested dissection by METIS: 30 % fewer operations in 3D (bench/README.md);
       // 2D layers keep MUMPS's own choice
       if (!ordering_given && dim == 3 && Acoustic::metis_available())
         mumps_settings.ordering = Acoustic::MumpsOrdering::Metis;
-      solver.reset(new Acoustic::HelmholtzSolver(solver_choice, 1e-6, MPI_COMM_SELF, mumps_settings));
+      solver.reset(
+          new Acoustic::HelmholtzSolver(solver_choice, 1e-6, MPI_COMM_SELF, mumps_settings));
       // reuse yes: between two updates few contacts change, precondition with the
       // last factors (faster, but the factors then depend on the earlier updates)
       solver->set_reuse_factorisation(reuse);
@@ -194,9 +203,11 @@ FixAcousticMindlin::~FixAcousticMindlin()
     const bool same_atoms = same_on_every_rank(lmp, atom_order_fingerprint(lmp), atoms_at_end);
     GranularContactWalker walker(lmp, CMD);
     if (!same_atoms || !walker.reset_factors_between_runs(groupbit))
-      error->warning(FLERR, "{} {}: the friction factors it set stay in the contact histories: "
-                            "atoms moved between processors since the last run. Use 'run 0' "
-                            "before 'unfix {}' to restore full friction", CMD, id, id);
+      error->warning(FLERR,
+                     "{} {}: the friction factors it set stay in the contact histories: "
+                     "atoms moved between processors since the last run. Use 'run 0' "
+                     "before 'unfix {}' to restore full friction",
+                     CMD, id, id);
   }
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
@@ -215,9 +226,12 @@ void FixAcousticMindlin::parse_keywords(CommandArguments &args)
       for (int k = 0; k < 3; k++) direction[k] = args.number(1 + k);
       direction_given = true;
     } else if (args.take("mode", 1)) {
-      if (strcmp(args.word(1), "all") == 0) source_mode = ALL;
-      else if (strcmp(args.word(1), "normal") == 0) source_mode = NORMAL;
-      else args.reject(FLERR, 1, "mode must be 'all' or 'normal', got '{}'", args.word(1));
+      if (strcmp(args.word(1), "all") == 0)
+        source_mode = ALL;
+      else if (strcmp(args.word(1), "normal") == 0)
+        source_mode = NORMAL;
+      else
+        args.reject(FLERR, 1, "mode must be 'all' or 'normal', got '{}'", args.word(1));
     } else if (args.take("cmu", 1)) {
       law.cmu = args.number(1);
       if (law.cmu < 0.0) args.reject(FLERR, 1, "cmu must be >= 0, got {}", law.cmu);
@@ -233,11 +247,17 @@ void FixAcousticMindlin::parse_keywords(CommandArguments &args)
       } catch (Acoustic::SolverError &e) {
         args.reject(FLERR, 1, "{}", e.what());
       }
+      if (solver_choice == Acoustic::LinearSolverChoice::Mumps && !Acoustic::mumps_available())
+        args.reject(FLERR, 1,
+                    "solver mumps needs an ACOUSTIC package built with MUMPS (Debian: "
+                    "libmumps-dev; CMake: ACOUSTIC_WITH_MUMPS=on); use solver auto (lu "
+                    "without MUMPS) or iterative");
       if (solver_choice == Acoustic::LinearSolverChoice::Iterative &&
           !Acoustic::KrylovHelmholtzSolver::available())
-        args.reject(FLERR, 1, "solver iterative needs an ACOUSTIC package built with PETSc "
-                              "(complex scalars; Debian: libpetsc-complex-dev); use solver auto, "
-                              "or rebuild LAMMPS with PETSc");
+        args.reject(FLERR, 1,
+                    "solver iterative needs an ACOUSTIC package built with PETSc "
+                    "(complex scalars; Debian: libpetsc-complex-dev); use solver auto, "
+                    "or rebuild LAMMPS with PETSc");
     } else if (args.take("tolerance", 1)) {
       krylov_settings.tolerance = args.number(1);
       if (!(krylov_settings.tolerance > 0.0 && krylov_settings.tolerance < 1.0))
@@ -245,25 +265,33 @@ void FixAcousticMindlin::parse_keywords(CommandArguments &args)
     } else if (args.take("max_iterations", 1)) {
       krylov_settings.max_iterations = args.integer(1);
       if (krylov_settings.max_iterations < 1)
-        args.reject(FLERR, 1, "max_iterations must be >= 1, got {}", krylov_settings.max_iterations);
+        args.reject(FLERR, 1, "max_iterations must be >= 1, got {}",
+                    krylov_settings.max_iterations);
     } else if (args.take("ordering", 1)) {
       const std::string name = args.word(1);
-      if (name == "mumps") mumps_settings.ordering = Acoustic::MumpsOrdering::Auto;
-      else if (name == "metis") mumps_settings.ordering = Acoustic::MumpsOrdering::Metis;
-      else args.reject(FLERR, 1, "ordering must be 'mumps' or 'metis', got '{}'", name);
+      if (name == "mumps")
+        mumps_settings.ordering = Acoustic::MumpsOrdering::Auto;
+      else if (name == "metis")
+        mumps_settings.ordering = Acoustic::MumpsOrdering::Metis;
+      else
+        args.reject(FLERR, 1, "ordering must be 'mumps' or 'metis', got '{}'", name);
       if (mumps_settings.ordering == Acoustic::MumpsOrdering::Metis && !Acoustic::metis_available())
-        args.reject(FLERR, 1, "ordering metis needs an ACOUSTIC package built with METIS "
-                              "(Debian: libmetis-dev); use ordering mumps");
+        args.reject(FLERR, 1,
+                    "ordering metis needs an ACOUSTIC package built with METIS "
+                    "(Debian: libmetis-dev); use ordering mumps");
       ordering_given = true;
     } else if (args.take("low_rank", 1)) {
       const double tolerance = args.number(1);
       if (!(tolerance >= 0.0 && tolerance < 1.0))
-        args.reject(FLERR, 1, "low_rank tolerance must be in [0, 1) (0: full rank), got {}", tolerance);
+        args.reject(FLERR, 1, "low_rank tolerance must be in [0, 1) (0: full rank), got {}",
+                    tolerance);
       mumps_settings.low_rank = tolerance > 0.0;
-      mumps_settings.low_rank_tolerance = tolerance > 0.0 ? tolerance : mumps_settings.low_rank_tolerance;
+      mumps_settings.low_rank_tolerance = tolerance > 0.0 ? tolerance
+                                                          : mumps_settings.low_rank_tolerance;
     } else if (args.take("shift", 1)) {
       krylov_settings.shift = args.number(1);
-      if (krylov_settings.shift < 0.0) args.reject(FLERR, 1, "shift must be >= 0, got {}", krylov_settings.shift);
+      if (krylov_settings.shift < 0.0)
+        args.reject(FLERR, 1, "shift must be >= 0, got {}", krylov_settings.shift);
     } else if (args.take("preconditioner", 1)) {
       try {
         krylov_settings.preconditioner = Acoustic::krylov_preconditioner_from_name(args.word(1));
@@ -287,20 +315,23 @@ void FixAcousticMindlin::normalise_direction()
 {
   const int dim = domain->dimension;
   if (dim == 2 && direction[2] != 0.0)
-    error->all(FLERR, "{}: in 2D the direction must lie in the xy plane "
-                      "(dz = 0)", CMD);
+    error->all(FLERR,
+               "{}: in 2D the direction must lie in the xy plane "
+               "(dz = 0)",
+               CMD);
   const double largest = MAX(fabs(direction[0]), MAX(fabs(direction[1]), fabs(direction[2])));
-  if (largest == 0.0)
-    error->all(FLERR, "{}: direction must not be the zero vector", CMD);
+  if (largest == 0.0) error->all(FLERR, "{}: direction must not be the zero vector", CMD);
   for (double &d : direction) d /= largest;
-  const double norm = sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
-                           direction[2] * direction[2]);
+  const double norm =
+      sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
   for (double &d : direction) d /= norm;
   for (int k = 0; k < dim; k++)
     if (fabs(direction[k]) == 1.0) direction_axis = k;
   if (source_mode == NORMAL && direction_axis < 0)
-    error->all(FLERR, "{}: mode normal prescribes one Cartesian component of the "
-                      "source grains; give a direction along x, y or z", CMD);
+    error->all(FLERR,
+               "{}: mode normal prescribes one Cartesian component of the "
+               "source grains; give a direction along x, y or z",
+               CMD);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -329,8 +360,9 @@ void FixAcousticMindlin::init_source()
     source_groupbit = 0;
     source_wall = network->wall_of_fix(source_wall_fix);
     if (source_wall < 0)
-      error->all(FLERR, "{}: source wall {} is not a wall of the vibration network (it must be "
-                        "a fix wall/gran xplane, yplane or zplane, or a fix wall/gran/region)",
+      error->all(FLERR,
+                 "{}: source wall {} is not a wall of the vibration network (it must be "
+                 "a fix wall/gran xplane, yplane or zplane, or a fix wall/gran/region)",
                  CMD, source_wall_fix);
     if (!direction_given) {
       // the default drive of a wall: along its normal
@@ -348,17 +380,22 @@ void FixAcousticMindlin::init_source()
   bigint counts_local[2] = {0, 0}, counts[2];
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & source_groupbit)) continue;
-    if (atom->mask[i] & groupbit) counts_local[0]++;
-    else counts_local[1]++;
+    if (atom->mask[i] & groupbit)
+      counts_local[0]++;
+    else
+      counts_local[1]++;
   }
   MPI_Allreduce(counts_local, counts, 2, MPI_LMP_BIGINT, MPI_SUM, world);
   if (counts[0] == 0)
-    error->all(FLERR, "{}: source group {} has no atom in the fix group {}; the source grains "
-                      "must belong to the fix group", CMD, source_group, group->names[igroup]);
+    error->all(FLERR,
+               "{}: source group {} has no atom in the fix group {}; the source grains "
+               "must belong to the fix group",
+               CMD, source_group, group->names[igroup]);
   if (counts[1] > 0)
-    error->all(FLERR, "{}: {} atoms of the source group {} are not in the fix group {}; the "
-                      "source grains must all belong to the fix group", CMD, counts[1],
-               source_group, group->names[igroup]);
+    error->all(FLERR,
+               "{}: {} atoms of the source group {} are not in the fix group {}; the "
+               "source grains must all belong to the fix group",
+               CMD, counts[1], source_group, group->names[igroup]);
 }
 
 /* ----------------------------------------------------------------------
@@ -375,10 +412,11 @@ void FixAcousticMindlin::init_other_fixes()
       if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) common_local++;
     MPI_Allreduce(&common_local, &common, 1, MPI_LMP_BIGINT, MPI_SUM, world);
     if (common > 0)
-      error->all(FLERR, "{} {} and fix {} both act on the contacts of the {} atoms their groups "
-                        "share, and would overwrite each other's friction factors; use one fix "
-                        "acoustic/mindlin, or groups without common atoms", CMD, id, other->id,
-                 common);
+      error->all(FLERR,
+                 "{} {} and fix {} both act on the contacts of the {} atoms their groups "
+                 "share, and would overwrite each other's friction factors; use one fix "
+                 "acoustic/mindlin, or groups without common atoms",
+                 CMD, id, other->id, common);
   }
 }
 
@@ -492,27 +530,32 @@ bool FixAcousticMindlin::report_solve(const Acoustic::HelmholtzSolution &sol,
   if (solver) {
     stats[NANALYSES] = counts_before[0] + static_cast<double>(solver->num_analyses());
     stats[NFACTORISATIONS] = counts_before[1] + static_cast<double>(solver->num_factorisations());
-    stats[NREUSES] = counts_before[2] + static_cast<double>(solver->num_reuses() + unchanged_networks);
+    stats[NREUSES] =
+        counts_before[2] + static_cast<double>(solver->num_reuses() + unchanged_networks);
   } else if (mumps) {
     stats[NANALYSES] = counts_before[0] + static_cast<double>(mumps->num_analyses());
     stats[NFACTORISATIONS] = counts_before[1] + static_cast<double>(mumps->num_factorisations());
-    stats[NREUSES] = counts_before[2] + static_cast<double>(mumps->num_reuses() + unchanged_networks);
+    stats[NREUSES] =
+        counts_before[2] + static_cast<double>(mumps->num_reuses() + unchanged_networks);
   } else {
-    stats[NREUSES] = counts_before[2] + static_cast<double>(krylov->num_reuses() + unchanged_networks);
+    stats[NREUSES] =
+        counts_before[2] + static_cast<double>(krylov->num_reuses() + unchanged_networks);
   }
   if (sol.ok()) return true;
   if (comm->me != 0) return false;
   if (krylov)
-    error->warning(FLERR, "{}: the iterative Helmholtz solve at f = {} failed ({}; relative "
-                          "residual {:.3g} after {} iterations); keeping the previous friction "
-                          "factors. The Krylov method needs damping (damping 0.01 or more) or a "
-                          "drive below the band; an undamped network driven inside its band is "
-                          "the direct solvers' job: use solver auto",
+    error->warning(FLERR,
+                   "{}: the iterative Helmholtz solve at f = {} failed ({}; relative "
+                   "residual {:.3g} after {} iterations); keeping the previous friction "
+                   "factors. The Krylov method needs damping (damping 0.01 or more) or a "
+                   "drive below the band; an undamped network driven inside its band is "
+                   "the direct solvers' job: use solver auto",
                    CMD, frequency, sol.message, sol.relative_residual, sol.iterations);
   else
-    error->warning(FLERR, "{}: the Helmholtz solve at f = {} failed ({}: {}; relative residual "
-                          "{:.3g}); keeping the previous friction factors. A frequency on a "
-                          "resonance of an undamped network is singular: add damping or move f",
+    error->warning(FLERR,
+                   "{}: the Helmholtz solve at f = {} failed ({}: {}; relative residual "
+                   "{:.3g}); keeping the previous friction factors. A frequency on a "
+                   "resonance of an undamped network is singular: add damping or move f",
                    CMD, frequency, Acoustic::solve_status_name(sol.status), sol.message,
                    sol.relative_residual);
   return false;
@@ -536,8 +579,8 @@ bool FixAcousticMindlin::solve_drive(std::string &failure)
   double t1 = t0;
   try {
     const Eigen::SparseMatrix<double> K = net.stiffness_matrix();
-    const Eigen::SparseMatrix<double> C =
-        net.has_damping() ? net.damping_matrix() : Eigen::SparseMatrix<double>(0, 0);
+    const Eigen::SparseMatrix<double> C = net.has_damping() ? net.damping_matrix()
+                                                            : Eigen::SparseMatrix<double>(0, 0);
     const Eigen::VectorXd M = net.mass_diagonal();
     t1 = MPI_Wtime();
     sol = solver->solve(K, C, M, 2.0 * M_PI * frequency, prescribed, qp);
@@ -565,14 +608,16 @@ class FixAcousticMindlin::Halo : public Acoustic::HaloExchange {
     fix->begin_halo(2 * width);
     for (int g = 0; g < part.num_owned; g++) copy_in(g, values, width);
     fix->comm->forward_comm(fix, 2 * width);
-    for (int g = part.num_owned; g < static_cast<int>(part.atoms.size()); g++) copy_out(g, values, width, false);
+    for (int g = part.num_owned; g < static_cast<int>(part.atoms.size()); g++)
+      copy_out(g, values, width, false);
     fix->comm_mode = COMM_AMPLITUDES;
   }
 
   void reverse(std::complex<double> *values, int width) override
   {
     fix->begin_halo(2 * width);
-    for (int g = part.num_owned; g < static_cast<int>(part.atoms.size()); g++) copy_in(g, values, width);
+    for (int g = part.num_owned; g < static_cast<int>(part.atoms.size()); g++)
+      copy_in(g, values, width);
     fix->comm->reverse_comm(fix, 2 * width);
     for (int g = 0; g < part.num_owned; g++) copy_out(g, values, width, true);
     fix->comm_mode = COMM_AMPLITUDES;
@@ -630,7 +675,8 @@ bool FixAcousticMindlin::solve_distributed()
     guess = Eigen::VectorXcd::Zero(part.network->num_dofs());
     for (int g = 0; g < part.num_owned; g++)
       for (int k = 0; k < ndof; k++)
-        guess[g * ndof + k] = std::complex<double>(q_atom[part.atoms[g]][2 * k], q_atom[part.atoms[g]][2 * k + 1]);
+        guess[g * ndof + k] =
+            std::complex<double>(q_atom[part.atoms[g]][2 * k], q_atom[part.atoms[g]][2 * k + 1]);
   }
   Halo halo(this, part);
   Acoustic::HelmholtzSolution sol;
@@ -677,8 +723,10 @@ void FixAcousticMindlin::update_factors()
     last_update = update->ntimestep;
     return;
   }
-  if (distributed()) network->build_local(groupbit, {source_groupbit});
-  else network->build(groupbit, {source_groupbit});
+  if (distributed())
+    network->build_local(groupbit, {source_groupbit});
+  else
+    network->build(groupbit, {source_groupbit});
   stats[NCONTACTS] = static_cast<double>(network->ncontacts_total());
   stats[TIME_GATHER] = MPI_Wtime() - t0;
   stats[TIME_ASSEMBLY] = stats[TIME_FACTORISATION] = stats[TIME_SOLVE] = stats[TIME_UPDATE] = 0.0;
@@ -784,8 +832,10 @@ void FixAcousticMindlin::evaluate_contacts(bool set_factors)
       const double sign = flip ? -1.0 : 1.0;
       for (int k = 0; k < ndof; k++) {
         qi[k] = std::complex<double>(q_atom[a][2 * k], q_atom[a][2 * k + 1]);
-        if (c.wall >= 0) qj[k] = (c.wall == source_wall && k < dim) ? direction[k] : 0.0;
-        else qj[k] = std::complex<double>(q_atom[b][2 * k], q_atom[b][2 * k + 1]);
+        if (c.wall >= 0)
+          qj[k] = (c.wall == source_wall && k < dim) ? direction[k] : 0.0;
+        else
+          qj[k] = std::complex<double>(q_atom[b][2 * k], q_atom[b][2 * k + 1]);
       }
       const Eigen::Vector3d n(sign * c.n[0], sign * c.n[1], sign * c.n[2]);
       try {
@@ -794,15 +844,18 @@ void FixAcousticMindlin::evaluate_contacts(bool set_factors)
         ut = Acoustic::tangential_amplitude(delta, n, amplitude);
         if (set_factors) s = Acoustic::friction_factor(law, c.kt, ut, c.mu, c.fncrit);
       } catch (Acoustic::SolverError &e) {
-        errors.report(fmt::format("{}: contact of atoms {} and {}: {}", CMD, tag[c.i], tag[c.j],
-                                  e.what()));
+        errors.report(
+            fmt::format("{}: contact of atoms {} and {}: {}", CMD, tag[c.i], tag[c.j], e.what()));
         continue;    // the factor stays as it was
       }
     }
     // a wall contact whose tangential model has no /acoustic variant keeps its friction
-    if (!c.factor) s = 1.0;
-    else if (set_factors) GranularContactWalker::set_friction_factor(c.factor, s);
-    else s = GranularContactWalker::friction_factor(c.factor);
+    if (!c.factor)
+      s = 1.0;
+    else if (set_factors)
+      GranularContactWalker::set_friction_factor(c.factor, s);
+    else
+      s = GranularContactWalker::friction_factor(c.factor);
     if (!c.owned) continue;
     double *row = contact_array[ncontact_rows++];
     row[0] = static_cast<double>(tag[c.i]);
@@ -867,9 +920,11 @@ void FixAcousticMindlin::warn_idle_source_wall()
   if (all > 0) return;
   warned_idle_source = true;
   if (comm->me == 0)
-    error->warning(FLERR, "{} {}: the source wall {} touches no grain of group {}: nothing vibrates "
-                          "and every friction factor stays 1; bring the grains onto the wall or "
-                          "check its position", CMD, id, source_wall_fix, group->names[igroup]);
+    error->warning(FLERR,
+                   "{} {}: the source wall {} touches no grain of group {}: nothing vibrates "
+                   "and every friction factor stays 1; bring the grains onto the wall or "
+                   "check its position",
+                   CMD, id, source_wall_fix, group->names[igroup]);
 }
 
 /* ----------------------------------------------------------------------
@@ -1026,7 +1081,8 @@ int FixAcousticMindlin::pack_forward_comm(int n, int *list, double *buf, int /*p
   int m = 0;
   if (comm_mode == COMM_HALO) {
     for (int ii = 0; ii < n; ii++)
-      for (int k = 0; k < halo_width; k++) buf[m++] = halo_values[static_cast<std::size_t>(list[ii]) * halo_width + k];
+      for (int k = 0; k < halo_width; k++)
+        buf[m++] = halo_values[static_cast<std::size_t>(list[ii]) * halo_width + k];
     return m;
   }
   for (int ii = 0; ii < n; ii++)
@@ -1039,7 +1095,8 @@ void FixAcousticMindlin::unpack_forward_comm(int n, int first, double *buf)
   int m = 0;
   if (comm_mode == COMM_HALO) {
     for (int i = first; i < first + n; i++)
-      for (int k = 0; k < halo_width; k++) halo_values[static_cast<std::size_t>(i) * halo_width + k] = buf[m++];
+      for (int k = 0; k < halo_width; k++)
+        halo_values[static_cast<std::size_t>(i) * halo_width + k] = buf[m++];
     return;
   }
   for (int i = first; i < first + n; i++)
@@ -1054,7 +1111,8 @@ int FixAcousticMindlin::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int i = first; i < first + n; i++)
-    for (int k = 0; k < halo_width; k++) buf[m++] = halo_values[static_cast<std::size_t>(i) * halo_width + k];
+    for (int k = 0; k < halo_width; k++)
+      buf[m++] = halo_values[static_cast<std::size_t>(i) * halo_width + k];
   return m;
 }
 
@@ -1062,7 +1120,8 @@ void FixAcousticMindlin::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
   for (int ii = 0; ii < n; ii++)
-    for (int k = 0; k < halo_width; k++) halo_values[static_cast<std::size_t>(list[ii]) * halo_width + k] += buf[m++];
+    for (int k = 0; k < halo_width; k++)
+      halo_values[static_cast<std::size_t>(list[ii]) * halo_width + k] += buf[m++];
 }
 
 double FixAcousticMindlin::memory_usage()

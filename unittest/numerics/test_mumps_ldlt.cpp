@@ -4,6 +4,7 @@
 ------------------------------------------------------------------------- */
 
 #include "acoustic_contact_network.h"
+#include "acoustic_factoriser.h"
 #include "acoustic_helmholtz_solver.h"
 #include "acoustic_mumps_ldlt.h"
 #include "acoustic_solver_error.h"
@@ -22,6 +23,10 @@
 
 using namespace Acoustic;
 using Complex = std::complex<double>;
+
+// a build without MUMPS (ACOUSTIC_WITH_MUMPS off) has nothing of it to test
+#define SKIP_WITHOUT_MUMPS() \
+  if (!mumps_available()) GTEST_SKIP() << "the package is built without MUMPS"
 
 namespace {
 
@@ -81,6 +86,7 @@ bool is_host()
 // each rank on its own (MPI_COMM_SELF): against a dense solve
 TEST(MumpsLdlt, RealIndefiniteMatchesDenseSolve)
 {
+  SKIP_WITHOUT_MUMPS();
   MumpsTeam team(MPI_COMM_SELF);
   MumpsLdlt<double> ldlt(team);
   // 12 x 8 grains, bottom row fixed: 176 DOFs; w^2 inside the spectrum (indefinite)
@@ -117,6 +123,7 @@ TEST(MumpsLdlt, RealIndefiniteMatchesDenseSolve)
 
 TEST(MumpsLdlt, ComplexSymmetricMatchesDenseSolve)
 {
+  SKIP_WITHOUT_MUMPS();
   MumpsTeam team(MPI_COMM_SELF);
   MumpsLdlt<Complex> ldlt(team);
   const Eigen::SparseMatrix<Complex> a = helmholtz_matrix<Complex>(10, 6, 1.3, 0.05);
@@ -133,6 +140,7 @@ TEST(MumpsLdlt, ComplexSymmetricMatchesDenseSolve)
 
 TEST(MumpsLdlt, ReportsASingularMatrix)
 {
+  SKIP_WITHOUT_MUMPS();
   MumpsTeam team(MPI_COMM_SELF);
   MumpsLdlt<double> ldlt(team);
   // [[1 1 0], [1 1 0], [0 0 2]]: rank 2
@@ -148,6 +156,7 @@ TEST(MumpsLdlt, ReportsASingularMatrix)
 // the ordering is really used (other factors than MUMPS's own choice)
 TEST(MumpsLdlt, MetisOrderingGivesTheSameSolution)
 {
+  SKIP_WITHOUT_MUMPS();
   ASSERT_TRUE(metis_available());
   const Eigen::SparseMatrix<Complex> a = helmholtz_matrix<Complex>(30, 20, 1.1, 0.05);
   const Eigen::MatrixXcd b = random_rhs<Complex>(static_cast<int>(a.rows()), 1);
@@ -175,6 +184,7 @@ TEST(MumpsLdlt, MetisOrderingGivesTheSameSolution)
 // on these networks the blocks hardly compress, see the doc page)
 TEST(MumpsLdlt, LowRankAndMetisFactorsOfA3DNetwork)
 {
+  SKIP_WITHOUT_MUMPS();
   const AcousticTest::TestNetwork t = AcousticTest::disordered_3d(18, 18, ContactModel::Normal, 0.05, 9u);
   const ContactNetwork &net = t.network;
   std::vector<int> dofs;
@@ -223,6 +233,7 @@ TEST(MumpsLdlt, LowRankAndMetisFactorsOfA3DNetwork)
 // disordered network driven inside its band, with and without damping
 TEST(MumpsLdlt, HelmholtzSolverAgreesWithUmfpack)
 {
+  SKIP_WITHOUT_MUMPS();
   std::vector<int> fixed;
   const ContactNetwork network = AcousticTest::disordered_network(30, 20, 5u, fixed);
   Eigen::VectorXcd values = Eigen::VectorXcd::Zero(fixed.size());
@@ -248,6 +259,7 @@ TEST(MumpsLdlt, HelmholtzSolverAgreesWithUmfpack)
 // not depend on the number of ranks (compared with a solve on the host alone).
 TEST(MumpsParallel, TeamOfAllRanksGivesTheSingleRankAnswer)
 {
+  SKIP_WITHOUT_MUMPS();
   std::vector<int> fixed;
   const ContactNetwork network = AcousticTest::disordered_network(40, 25, 9u, fixed);
   Eigen::VectorXcd values = Eigen::VectorXcd::Zero(fixed.size());
@@ -303,6 +315,7 @@ TEST(MumpsParallel, TeamOfAllRanksGivesTheSingleRankAnswer)
 // that of a dense solve
 TEST(MumpsParallel, EveryRankFactorises)
 {
+  SKIP_WITHOUT_MUMPS();
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   MumpsTeam team(MPI_COMM_WORLD);
@@ -322,4 +335,37 @@ TEST(MumpsParallel, EveryRankFactorises)
   std::vector<double> all(size);
   MPI_Allgather(&mine, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
   for (int r = 0; r < size; ++r) EXPECT_GT(all[r], 0.0) << "rank " << r << " did no factorisation work";
+}
+
+TEST(MumpsLdlt, ABuildWithoutMumpsRefusesItAndAutoIsLu)
+{
+  MumpsTeam team(MPI_COMM_SELF);
+  const std::string auto_real = make_factoriser<double>(LinearSolverChoice::Auto, team, MumpsSettings())->name();
+  const std::string auto_complex = make_factoriser<Complex>(LinearSolverChoice::Auto, team, MumpsSettings())->name();
+  if (mumps_available()) {
+    EXPECT_EQ(auto_real, "mumps");
+    EXPECT_EQ(auto_complex, "mumps");
+    return;
+  }
+  EXPECT_EQ(auto_real, "lu");
+  EXPECT_EQ(auto_complex, "lu");
+  try {
+    MumpsLdlt<double> ldlt(team);
+    FAIL() << "MumpsLdlt built without MUMPS";
+  } catch (const SolverError &e) {
+    EXPECT_NE(std::string(e.what()).find("has no MUMPS (Debian: libmumps-dev"), std::string::npos) << e.what();
+  }
+  // solver auto still answers, with UMFPACK, as solver lu does
+  std::vector<int> fixed;
+  const ContactNetwork network = AcousticTest::disordered_network(20, 10, 5u, fixed);
+  Eigen::VectorXcd values = Eigen::VectorXcd::Zero(fixed.size());
+  for (std::size_t k = 1; k < fixed.size(); k += 2) values[k] = 1.0;
+  HelmholtzSolver automatic(LinearSolverChoice::Auto), lu(LinearSolverChoice::Lu);
+  const HelmholtzSolution a = automatic.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                              network.mass_diagonal(), 0.9, fixed, values);
+  const HelmholtzSolution b = lu.solve(network.stiffness_matrix(), network.damping_matrix(),
+                                       network.mass_diagonal(), 0.9, fixed, values);
+  ASSERT_TRUE(a.ok() && b.ok()) << a.message << b.message;
+  EXPECT_EQ(a.factorisation, "lu");
+  EXPECT_EQ((a.q - b.q).norm(), 0.0);
 }

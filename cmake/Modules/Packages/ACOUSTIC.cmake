@@ -1,30 +1,75 @@
-# Dependencies of the ACOUSTIC package: Eigen (dense/sparse linear algebra),
-# SuiteSparse CHOLMOD + UMFPACK (sparse factorisations), MUMPS (parallel
-# sparse symmetric indefinite factorisation, on MPI), Spectra (sparse
-# eigensolvers, header only); optional: PETSc with complex scalars (the
-# distributed Krylov solver, solver iterative; ACOUSTIC_HAVE_PETSC) and METIS
-# (nested-dissection orderings for MUMPS; ACOUSTIC_HAVE_METIS).  This file is included by LAMMPS's CMake build
-# when PKG_ACOUSTIC is on (copy it to cmake/Modules/Packages/ACOUSTIC.cmake of
-# a LAMMPS tree) and by the stand-alone ACOUSTIC build for its unit tests.
+# Dependencies of the ACOUSTIC package.  This file is included by LAMMPS's
+# CMake build when PKG_ACOUSTIC is on (copy it to
+# cmake/Modules/Packages/ACOUSTIC.cmake of a LAMMPS tree) and by the
+# stand-alone ACOUSTIC build for its unit tests.
 #
-# Result: ACOUSTIC_INCLUDE_DIRS, ACOUSTIC_LIBRARIES, and, inside LAMMPS, the
+# Required:
+#   Eigen3       dense and sparse linear algebra (header only).  Inside LAMMPS
+#                found as the MACHDYN package finds it, or downloaded with
+#                -D DOWNLOAD_EIGEN3=on (LAMMPS's own tarball and checksum)
+#   SuiteSparse  UMFPACK (solver lu, and auto without MUMPS) and CHOLMOD
+#                (solver ldlt, the shift-invert of method lanczos)
+#   MPI, BLAS, LAPACK
+# Optional, each with a switch (on by default; off, or not found: the
+# package is built without it, and the keywords that need it stop the
+# input with an ERROR that says so):
+#   ACOUSTIC_WITH_MUMPS    MUMPS (Debian: libmumps-dev): solver mumps, and
+#                          solver auto's LDL^T (without it auto is lu)
+#   ACOUSTIC_WITH_SPECTRA  Spectra (Debian: libspectra-dev): compute
+#                          vibration/modes method lanczos
+#   ACOUSTIC_WITH_PETSC    PETSc with complex scalars (Debian:
+#                          libpetsc-complex-dev): solver iterative
+#   METIS (found when present; Debian: libmetis-dev): the nested-dissection
+#                          ordering of the MUMPS factorisations (ordering metis)
+#
+# Result: ACOUSTIC_INCLUDE_DIRS, ACOUSTIC_LIBRARIES, ACOUSTIC_DEFINITIONS
+# (ACOUSTIC_HAVE_MUMPS, _SPECTRA, _PETSC, _METIS), and, inside LAMMPS, the
 # lammps target linked against them.
 
-find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+set(ACOUSTIC_INCLUDE_DIRS)
+set(ACOUSTIC_LIBRARIES)
+set(ACOUSTIC_DEFINITIONS)
+set(_acoustic_missing)
+
+if(TARGET lammps)
+  find_package(Eigen3 3.3 NO_MODULE QUIET)
+  if(EIGEN3_FOUND)
+    set(DOWNLOAD_EIGEN3_DEFAULT OFF)
+  else()
+    set(DOWNLOAD_EIGEN3_DEFAULT ON)
+  endif()
+  option(DOWNLOAD_EIGEN3 "Download Eigen3 instead of using an already installed one" ${DOWNLOAD_EIGEN3_DEFAULT})
+  if(DOWNLOAD_EIGEN3 AND NOT TARGET LAMMPS::EIGEN3)
+    # as LAMMPS's MACHDYN package does (the same URL and checksum variables)
+    set(EIGEN3_URL "${LAMMPS_THIRDPARTY_URL}/eigen-3.4.0.tar.gz" CACHE STRING "URL for Eigen3 tarball")
+    set(EIGEN3_MD5 "4c527a9171d71a72a9d4186e65bea559" CACHE STRING "MD5 checksum of Eigen3 tarball")
+    mark_as_advanced(EIGEN3_URL EIGEN3_MD5)
+    include(ExternalProject)
+    ExternalProject_Add(Eigen3_build URL ${EIGEN3_URL} URL_MD5 ${EIGEN3_MD5}
+      CONFIGURE_COMMAND "" BUILD_COMMAND "" INSTALL_COMMAND "")
+    ExternalProject_get_property(Eigen3_build SOURCE_DIR)
+    add_library(LAMMPS::EIGEN3 INTERFACE IMPORTED)
+    set_target_properties(LAMMPS::EIGEN3 PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${SOURCE_DIR}")
+    add_dependencies(LAMMPS::EIGEN3 Eigen3_build)
+  endif()
+  if(DOWNLOAD_EIGEN3)
+    list(APPEND ACOUSTIC_LIBRARIES LAMMPS::EIGEN3)
+  elseif(EIGEN3_FOUND)
+    list(APPEND ACOUSTIC_LIBRARIES Eigen3::Eigen)
+  else()
+    message(FATAL_ERROR "ACOUSTIC package: Eigen3 not found; help CMake find it with Eigen3_DIR, "
+      "or set DOWNLOAD_EIGEN3=on to download it (Debian: apt-get install libeigen3-dev)")
+  endif()
+else()
+  find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+  list(APPEND ACOUSTIC_LIBRARIES Eigen3::Eigen)
+endif()
 
 find_path(ACOUSTIC_SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse
           DOC "Directory with SuiteSparse headers (cholmod.h, umfpack.h)")
-find_path(ACOUSTIC_SPECTRA_INCLUDE_DIR Spectra/SymEigsShiftSolver.h
-          DOC "Directory with the Spectra headers")
-find_path(ACOUSTIC_MUMPS_INCLUDE_DIR dmumps_c.h
-          DOC "Directory with the MUMPS C headers (dmumps_c.h, zmumps_c.h)")
-set(_acoustic_missing)
-foreach(_dir ACOUSTIC_SUITESPARSE_INCLUDE_DIR ACOUSTIC_SPECTRA_INCLUDE_DIR ACOUSTIC_MUMPS_INCLUDE_DIR)
-  if(NOT ${_dir})
-    list(APPEND _acoustic_missing ${_dir})
-  endif()
-endforeach()
-
+if(NOT ACOUSTIC_SUITESPARSE_INCLUDE_DIR)
+  list(APPEND _acoustic_missing ACOUSTIC_SUITESPARSE_INCLUDE_DIR)
+endif()
 set(ACOUSTIC_SUITESPARSE_LIBRARIES)
 foreach(_lib umfpack cholmod amd camd colamd ccolamd suitesparseconfig)
   find_library(ACOUSTIC_${_lib}_LIBRARY NAMES ${_lib})
@@ -34,25 +79,60 @@ foreach(_lib umfpack cholmod amd camd colamd ccolamd suitesparseconfig)
     list(APPEND _acoustic_missing lib${_lib})
   endif()
 endforeach()
-# MUMPS built for MPI (Debian: libmumps-dev), not the sequential libmumps_seq
-set(ACOUSTIC_MUMPS_LIBRARIES)
-foreach(_lib dmumps zmumps mumps_common)
-  find_library(ACOUSTIC_${_lib}_LIBRARY NAMES ${_lib})
-  if(ACOUSTIC_${_lib}_LIBRARY)
-    list(APPEND ACOUSTIC_MUMPS_LIBRARIES ${ACOUSTIC_${_lib}_LIBRARY})
-  else()
-    list(APPEND _acoustic_missing lib${_lib})
-  endif()
-endforeach()
+list(APPEND ACOUSTIC_INCLUDE_DIRS ${ACOUSTIC_SUITESPARSE_INCLUDE_DIR})
+list(APPEND ACOUSTIC_LIBRARIES ${ACOUSTIC_SUITESPARSE_LIBRARIES})
+
+# optional: MUMPS built for MPI (Debian: libmumps-dev), not the sequential libmumps_seq
+option(ACOUSTIC_WITH_MUMPS "Build solver mumps of ACOUSTIC (and MUMPS's LDL^T in solver auto)" ON)
+set(_acoustic_mumps_found)
+if(ACOUSTIC_WITH_MUMPS)
+  find_path(ACOUSTIC_MUMPS_INCLUDE_DIR dmumps_c.h
+            DOC "Directory with the MUMPS C headers (dmumps_c.h, zmumps_c.h)")
+  set(ACOUSTIC_MUMPS_LIBRARIES)
+  set(_acoustic_mumps_found ${ACOUSTIC_MUMPS_INCLUDE_DIR})
+  foreach(_lib dmumps zmumps mumps_common)
+    find_library(ACOUSTIC_${_lib}_LIBRARY NAMES ${_lib})
+    if(ACOUSTIC_${_lib}_LIBRARY)
+      list(APPEND ACOUSTIC_MUMPS_LIBRARIES ${ACOUSTIC_${_lib}_LIBRARY})
+    else()
+      set(_acoustic_mumps_found)
+    endif()
+  endforeach()
+endif()
+if(_acoustic_mumps_found)
+  message(STATUS "ACOUSTIC: MUMPS: solver mumps available, solver auto factorises with MUMPS")
+  list(APPEND ACOUSTIC_INCLUDE_DIRS ${ACOUSTIC_MUMPS_INCLUDE_DIR})
+  list(APPEND ACOUSTIC_LIBRARIES ${ACOUSTIC_MUMPS_LIBRARIES})
+  list(APPEND ACOUSTIC_DEFINITIONS ACOUSTIC_HAVE_MUMPS)
+else()
+  message(STATUS "ACOUSTIC: no MUMPS (ACOUSTIC_WITH_MUMPS off, or not found; Debian: "
+    "libmumps-dev): built without solver mumps, solver auto is lu")
+endif()
+
+# optional: Spectra (header only), the Lanczos eigensolver of compute vibration/modes
+option(ACOUSTIC_WITH_SPECTRA "Build method lanczos of compute vibration/modes (Spectra)" ON)
+if(ACOUSTIC_WITH_SPECTRA)
+  find_path(ACOUSTIC_SPECTRA_INCLUDE_DIR Spectra/SymEigsShiftSolver.h
+            DOC "Directory with the Spectra headers")
+endif()
+if(ACOUSTIC_WITH_SPECTRA AND ACOUSTIC_SPECTRA_INCLUDE_DIR)
+  message(STATUS "ACOUSTIC: Spectra: method lanczos available")
+  list(APPEND ACOUSTIC_INCLUDE_DIRS ${ACOUSTIC_SPECTRA_INCLUDE_DIR})
+  list(APPEND ACOUSTIC_DEFINITIONS ACOUSTIC_HAVE_SPECTRA)
+else()
+  message(STATUS "ACOUSTIC: no Spectra (ACOUSTIC_WITH_SPECTRA off, or not found; Debian: "
+    "libspectra-dev): built without method lanczos")
+endif()
+
 if(TARGET lammps AND NOT PKG_GRANULAR)
   message(FATAL_ERROR "ACOUSTIC package: needs the GRANULAR package (-D PKG_GRANULAR=on), "
     "whose pair style and sub-models it extends")
 endif()
 if(TARGET lammps)
-  # inside LAMMPS: link LAMMPS's own MPI; MUMPS needs a real MPI library, so a
+  # inside LAMMPS: link LAMMPS's own MPI; the solvers need a real MPI library, so a
   # serial LAMMPS build (BUILD_MPI off) is refused
   if(NOT BUILD_MPI)
-    message(FATAL_ERROR "ACOUSTIC package: needs BUILD_MPI=on (MUMPS factorises with MPI)")
+    message(FATAL_ERROR "ACOUSTIC package: needs BUILD_MPI=on (its distributed solves and MUMPS use MPI)")
   endif()
   set(_acoustic_mpi MPI::MPI_CXX)
 else()
@@ -64,15 +144,10 @@ find_package(LAPACK REQUIRED)
 
 if(_acoustic_missing)
   message(FATAL_ERROR "ACOUSTIC package: missing ${_acoustic_missing}. "
-    "Install SuiteSparse, MUMPS and Spectra (Debian: apt-get install libsuitesparse-dev "
-    "libmumps-dev libspectra-dev libeigen3-dev) or point CMake to them with -D<VAR>=<path>.")
+    "Install SuiteSparse (Debian: apt-get install libsuitesparse-dev) or point CMake to it "
+    "with -D<VAR>=<path>.")
 endif()
-
-set(ACOUSTIC_INCLUDE_DIRS ${ACOUSTIC_SUITESPARSE_INCLUDE_DIR} ${ACOUSTIC_SPECTRA_INCLUDE_DIR}
-    ${ACOUSTIC_MUMPS_INCLUDE_DIR})
-set(ACOUSTIC_LIBRARIES Eigen3::Eigen ${ACOUSTIC_SUITESPARSE_LIBRARIES} ${ACOUSTIC_MUMPS_LIBRARIES}
-    ${_acoustic_mpi} ${LAPACK_LIBRARIES} ${BLAS_LIBRARIES})
-set(ACOUSTIC_DEFINITIONS)
+list(APPEND ACOUSTIC_LIBRARIES ${_acoustic_mpi} ${LAPACK_LIBRARIES} ${BLAS_LIBRARIES})
 
 # optional: PETSc built with complex scalars, found through its pkg-config
 # file (Debian installs the complex build's under petscdir/petsc-complex;
