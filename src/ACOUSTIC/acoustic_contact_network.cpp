@@ -1,4 +1,17 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    ACOUSTIC package numerics: the linearised contact network.
 ------------------------------------------------------------------------- */
 
@@ -14,23 +27,23 @@ namespace Acoustic {
 
 namespace {
 
-bool finite_nonnegative(double x)
-{
-  return std::isfinite(x) && x >= 0.0;
-}
+  bool finite_nonnegative(double x)
+  {
+    return std::isfinite(x) && x >= 0.0;
+  }
 
-bool finite_positive(double x)
-{
-  return std::isfinite(x) && x > 0.0;
-}
+  bool finite_positive(double x)
+  {
+    return std::isfinite(x) && x > 0.0;
+  }
 
-// matrix of the cross product a x b = [a]_x b
-Eigen::Matrix3d cross_matrix(const Eigen::Vector3d &a)
-{
-  Eigen::Matrix3d m;
-  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return m;
-}
+  // matrix of the cross product a x b = [a]_x b
+  Eigen::Matrix3d cross_matrix(const Eigen::Vector3d &a)
+  {
+    Eigen::Matrix3d m;
+    m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+    return m;
+  }
 
 }    // namespace
 
@@ -48,15 +61,18 @@ std::string contact_model_name(ContactModel model)
 
 ContactNetwork::ContactNetwork(int dimension, ContactModel model, std::vector<Grain> grains,
                                std::vector<Contact> contacts) :
-    dimension_(dimension), model_(model), grains_(std::move(grains)), contacts_(std::move(contacts))
+    dimension_(dimension),
+    model_(model), grains_(std::move(grains)), contacts_(std::move(contacts))
 {
   if (dimension_ != 2 && dimension_ != 3)
-    throw SolverError("contact network: dimension must be 2 or 3, got " + std::to_string(dimension_));
+    throw SolverError("contact network: dimension must be 2 or 3, got " +
+                      std::to_string(dimension_));
   for (std::size_t g = 0; g < grains_.size(); ++g) {
     if (!finite_positive(grains_[g].mass))
-      throw SolverError("contact network: grain " + std::to_string(g) +
-                        " has a mass that is not positive and finite; give frozen grains their real "
-                        "mass and prescribe or fix their degrees of freedom instead");
+      throw SolverError(
+          "contact network: grain " + std::to_string(g) +
+          " has a mass that is not positive and finite; give frozen grains their real "
+          "mass and prescribe or fix their degrees of freedom instead");
     if (model_ == ContactModel::Full && !finite_positive(grains_[g].radius))
       throw SolverError("contact network: grain " + std::to_string(g) +
                         " has a radius that is not positive and finite (model full needs radii)");
@@ -65,10 +81,13 @@ ContactNetwork::ContactNetwork(int dimension, ContactModel model, std::vector<Gr
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     const Contact &c = contacts_[k];
     // built only when a check fails: this loop runs over every contact
-    auto which = [k]() { return "contact network: contact " + std::to_string(k) + " "; };
+    auto which = [k]() {
+      return "contact network: contact " + std::to_string(k) + " ";
+    };
     if (c.i < 0 || c.i >= ngrains || c.j < 0 || c.j >= ngrains)
       throw SolverError(which() + "refers to a grain outside 0.." + std::to_string(ngrains - 1));
-    if (c.i == c.j) throw SolverError(which() + "joins grain " + std::to_string(c.i) + " to itself");
+    if (c.i == c.j)
+      throw SolverError(which() + "joins grain " + std::to_string(c.i) + " to itself");
     if (!c.normal.allFinite() || std::abs(c.normal.norm() - 1.0) > 1e-8)
       throw SolverError(which() + "has a normal that is not a unit vector");
     if (dimension_ == 2 && std::abs(c.normal.z()) > 1e-12)
@@ -227,7 +246,8 @@ Eigen::SparseMatrix<double> ContactNetwork::assemble(bool dashpots) const
     }
     const Eigen::Matrix3d spring = k.first * nn + k.second * (Eigen::Matrix3d::Identity() - nn);
     const ContactJacobian jac = contact_jacobian(c);
-    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12> local = jac.transpose() * spring * jac;
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12> local =
+        jac.transpose() * spring * jac;
     add_block(c.i, c.i, local.topLeftCorner(ndof, ndof));
     add_block(c.j, c.j, local.bottomRightCorner(ndof, ndof));
     add_block(c.i, c.j, local.topRightCorner(ndof, ndof));

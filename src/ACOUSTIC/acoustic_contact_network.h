@@ -1,3 +1,16 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: the linearised contact network.
 
@@ -63,7 +76,7 @@ struct Grain {
 };
 
 struct Contact {
-  int i;                     // grain indices, i != j
+  int i;    // grain indices, i != j
   int j;
   Eigen::Vector3d normal;    // unit vector from j to i (z component 0 in 2D)
   double kn;                 // normal stiffness >= 0
@@ -76,7 +89,8 @@ class ContactNetwork {
  public:
   // Validates the input (dimension 2 or 3, grain and contact data) and throws
   // SolverError with the offending grain or contact on error.
-  ContactNetwork(int dimension, ContactModel model, std::vector<Grain> grains, std::vector<Contact> contacts);
+  ContactNetwork(int dimension, ContactModel model, std::vector<Grain> grains,
+                 std::vector<Contact> contacts);
 
   int dimension() const { return dimension_; }
   ContactModel model() const { return model_; }

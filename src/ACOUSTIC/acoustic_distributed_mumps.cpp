@@ -1,4 +1,17 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    ACOUSTIC package numerics: MUMPS on a distributed network.
 ------------------------------------------------------------------------- */
 
@@ -11,58 +24,61 @@ namespace Acoustic {
 
 namespace {
 
-using Complex = std::complex<double>;
-using Clock = std::chrono::steady_clock;
+  using Complex = std::complex<double>;
+  using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+  double seconds_since(Clock::time_point start)
+  {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  }
 
-template <typename Scalar> Scalar as_scalar(const Complex &v);
-template <> double as_scalar<double>(const Complex &v)
-{
-  return v.real();
-}
-template <> Complex as_scalar<Complex>(const Complex &v)
-{
-  return v;
-}
+  template <typename Scalar> Scalar as_scalar(const Complex &v);
+  template <> double as_scalar<double>(const Complex &v)
+  {
+    return v.real();
+  }
+  template <> Complex as_scalar<Complex>(const Complex &v)
+  {
+    return v;
+  }
 
-// the unknowns' values of every rank on rank 0, in the global numbering
-std::vector<Complex> gather_to_host(const std::vector<Complex> &mine, long total, MPI_Comm comm)
-{
-  int nprocs = 1, rank = 0;
-  MPI_Comm_size(comm, &nprocs);
-  MPI_Comm_rank(comm, &rank);
-  int count = 2 * static_cast<int>(mine.size());
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  for (int p = 1; p < nprocs; ++p) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<Complex> all(rank == 0 ? total : 0);
-  MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm);
-  return all;
-}
+  // the unknowns' values of every rank on rank 0, in the global numbering
+  std::vector<Complex> gather_to_host(const std::vector<Complex> &mine, long total, MPI_Comm comm)
+  {
+    int nprocs = 1, rank = 0;
+    MPI_Comm_size(comm, &nprocs);
+    MPI_Comm_rank(comm, &rank);
+    int count = 2 * static_cast<int>(mine.size());
+    std::vector<int> counts(nprocs), displs(nprocs, 0);
+    MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+    for (int p = 1; p < nprocs; ++p) displs[p] = displs[p - 1] + counts[p - 1];
+    std::vector<Complex> all(rank == 0 ? total : 0);
+    MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                MPI_DOUBLE, 0, comm);
+    return all;
+  }
 
-// back from rank 0 to the owners of the unknowns
-std::vector<Complex> scatter_from_host(const std::vector<Complex> &all, int mine, MPI_Comm comm)
-{
-  int nprocs = 1;
-  MPI_Comm_size(comm, &nprocs);
-  int count = 2 * mine;
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  for (int p = 1; p < nprocs; ++p) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<Complex> part(mine);
-  MPI_Scatterv(all.data(), counts.data(), displs.data(), MPI_DOUBLE, part.data(), count, MPI_DOUBLE, 0, comm);
-  return part;
-}
+  // back from rank 0 to the owners of the unknowns
+  std::vector<Complex> scatter_from_host(const std::vector<Complex> &all, int mine, MPI_Comm comm)
+  {
+    int nprocs = 1;
+    MPI_Comm_size(comm, &nprocs);
+    int count = 2 * mine;
+    std::vector<int> counts(nprocs), displs(nprocs, 0);
+    MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+    for (int p = 1; p < nprocs; ++p) displs[p] = displs[p - 1] + counts[p - 1];
+    std::vector<Complex> part(mine);
+    MPI_Scatterv(all.data(), counts.data(), displs.data(), MPI_DOUBLE, part.data(), count,
+                 MPI_DOUBLE, 0, comm);
+    return part;
+  }
 
 }    // namespace
 
 DistributedMumpsSolver::DistributedMumpsSolver(MPI_Comm comm, const MumpsSettings &settings,
                                                double residual_tolerance) :
-    comm_(comm), tolerance_(residual_tolerance), team_(comm), real_(team_, settings), complex_(team_, settings)
+    comm_(comm),
+    tolerance_(residual_tolerance), team_(comm), real_(team_, settings), complex_(team_, settings)
 {
 }
 
@@ -70,9 +86,11 @@ DistributedMumpsSolver::~DistributedMumpsSolver() = default;
 
 // analyse if the pattern changed on any rank, then factorise
 template <typename Scalar>
-bool DistributedMumpsSolver::factorise(MumpsLdlt<Scalar> &mumps, long n, const std::vector<long> &rows,
-                                       const std::vector<long> &cols, const std::vector<Complex> &values,
-                                       std::vector<long> &last_rows, std::vector<long> &last_cols, long &last_n)
+bool DistributedMumpsSolver::factorise(MumpsLdlt<Scalar> &mumps, long n,
+                                       const std::vector<long> &rows, const std::vector<long> &cols,
+                                       const std::vector<Complex> &values,
+                                       std::vector<long> &last_rows, std::vector<long> &last_cols,
+                                       long &last_n)
 {
   std::vector<Scalar> entries(values.size());
   for (std::size_t k = 0; k < values.size(); ++k) entries[k] = as_scalar<Scalar>(values[k]);
@@ -99,7 +117,8 @@ bool DistributedMumpsSolver::factorise(MumpsLdlt<Scalar> &mumps, long n, const s
   return mumps.info() == Eigen::Success;
 }
 
-HelmholtzSolution DistributedMumpsSolver::solve(const DistributedHelmholtzProblem &problem, HaloExchange &halo,
+HelmholtzSolution DistributedMumpsSolver::solve(const DistributedHelmholtzProblem &problem,
+                                                HaloExchange &halo,
                                                 const Eigen::VectorXcd *last_solution)
 {
   timings_ = SolverTimings();
@@ -142,8 +161,9 @@ HelmholtzSolution DistributedMumpsSolver::solve(const DistributedHelmholtzProble
   if (!factorised) {
     for (Complex &v : x) v = 0.0;
     result.status = SolveStatus::FactorisationFailed;
-    result.message = "the Helmholtz matrix is singular: the frequency is an eigenfrequency of the network; "
-                     "change the frequency or add damping [" +
+    result.message =
+        "the Helmholtz matrix is singular: the frequency is an eigenfrequency of the network; "
+        "change the frequency or add damping [" +
         (damped ? complex_.message() : real_.message()) + "]";
     result.relative_residual = 1.0;
     result.q = system.local_solution(x);
@@ -151,7 +171,8 @@ HelmholtzSolution DistributedMumpsSolver::solve(const DistributedHelmholtzProble
   }
   std::vector<Complex> all = gather_to_host(system.right_hand_side(), total, comm_);
   if (damped) {
-    Eigen::MatrixXcd b = Eigen::Map<Eigen::VectorXcd>(all.data(), static_cast<Eigen::Index>(all.size()));
+    Eigen::MatrixXcd b =
+        Eigen::Map<Eigen::VectorXcd>(all.data(), static_cast<Eigen::Index>(all.size()));
     complex_.solve_distributed(b);
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = b(k, 0);
   } else {

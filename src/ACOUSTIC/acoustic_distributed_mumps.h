@@ -1,3 +1,16 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: the Helmholtz problem of a distributed
    network factorised by MUMPS from distributed assembled input.
@@ -32,7 +45,8 @@ namespace Acoustic {
 
 class DistributedMumpsSolver {
  public:
-  DistributedMumpsSolver(MPI_Comm comm, const MumpsSettings &settings, double residual_tolerance = 1e-6);
+  DistributedMumpsSolver(MPI_Comm comm, const MumpsSettings &settings,
+                         double residual_tolerance = 1e-6);
   ~DistributedMumpsSolver();
   DistributedMumpsSolver(const DistributedMumpsSolver &) = delete;
   DistributedMumpsSolver &operator=(const DistributedMumpsSolver &) = delete;
@@ -63,9 +77,9 @@ class DistributedMumpsSolver {
   SolverTimings timings_;
 
   template <typename Scalar>
-  bool factorise(MumpsLdlt<Scalar> &mumps, long n, const std::vector<long> &rows, const std::vector<long> &cols,
-                 const std::vector<std::complex<double>> &values, std::vector<long> &last_rows,
-                 std::vector<long> &last_cols, long &last_n);
+  bool factorise(MumpsLdlt<Scalar> &mumps, long n, const std::vector<long> &rows,
+                 const std::vector<long> &cols, const std::vector<std::complex<double>> &values,
+                 std::vector<long> &last_rows, std::vector<long> &last_cols, long &last_n);
 };
 
 }    // namespace Acoustic

@@ -1,3 +1,16 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: the Helmholtz system of a network distributed
    over MPI ranks.
@@ -43,8 +56,8 @@ struct DistributedHelmholtzProblem {
   const ContactNetwork *network = nullptr;    // local grains and this rank's contacts
   int num_owned = 0;                          // grains 0 .. num_owned - 1 are owned here
   double omega = 0.0;
-  std::vector<int> prescribed_dofs;           // local DOFs, any local grain
-  Eigen::VectorXcd prescribed_values;         // their amplitudes
+  std::vector<int> prescribed_dofs;      // local DOFs, any local grain
+  Eigen::VectorXcd prescribed_values;    // their amplitudes
 };
 
 class DistributedSystem {
@@ -58,14 +71,14 @@ class DistributedSystem {
 
   MPI_Comm comm() const { return comm_; }
   int dofs_per_grain() const { return ndof_; }
-  int num_dofs() const { return num_dofs_; }                      // local DOFs
+  int num_dofs() const { return num_dofs_; }    // local DOFs
   int num_unknowns() const { return static_cast<int>(unknowns_.size()); }
   const std::vector<int> &unknowns() const { return unknowns_; }    // local DOF of each unknown
-  long first_unknown() const { return first_; }                  // global index of this rank's first
+  long first_unknown() const { return first_; }    // global index of this rank's first
   long num_global_unknowns() const { return total_; }
 
   const std::vector<Complex> &right_hand_side() const { return rhs_; }
-  double rhs_norm() const { return rhs_norm_; }                  // ||b|| over every rank
+  double rhs_norm() const { return rhs_norm_; }    // ||b|| over every rank
 
   // y = A x on this rank's unknowns
   void apply(const Complex *x, Complex *y);
@@ -95,7 +108,7 @@ class DistributedSystem {
   Eigen::VectorXd owned_mass_;             // per local DOF, 0 for ghosts and nodes
   std::vector<char> prescribed_;
   std::vector<int> unknowns_;
-  Eigen::VectorXcd values_;                // prescribed values per local DOF
+  Eigen::VectorXcd values_;    // prescribed values per local DOF
   std::vector<Complex> rhs_;
   double rhs_norm_ = 0.0;
   Eigen::VectorXcd in_, out_;

@@ -1,4 +1,17 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    ACOUSTIC package numerics: mass-weighted stiffness of the free DOFs.
 ------------------------------------------------------------------------- */
 
@@ -12,17 +25,21 @@
 
 namespace Acoustic {
 
-DynamicalMatrix::DynamicalMatrix(const Eigen::SparseMatrix<double> &stiffness, const Eigen::VectorXd &mass,
-                                 const std::vector<int> &fixed_dofs, int dofs_per_grain) :
-    num_dofs_(static_cast<int>(stiffness.rows())), dofs_per_grain_(dofs_per_grain), num_active_grains_(0),
-    upper_bound_(0.0)
+DynamicalMatrix::DynamicalMatrix(const Eigen::SparseMatrix<double> &stiffness,
+                                 const Eigen::VectorXd &mass, const std::vector<int> &fixed_dofs,
+                                 int dofs_per_grain) :
+    num_dofs_(static_cast<int>(stiffness.rows())),
+    dofs_per_grain_(dofs_per_grain), num_active_grains_(0), upper_bound_(0.0)
 {
-  if (stiffness.cols() != stiffness.rows()) throw SolverError("vibration modes: the stiffness matrix is not square");
-  if (mass.size() != num_dofs_) throw SolverError("vibration modes: the mass vector must have one entry per DOF");
+  if (stiffness.cols() != stiffness.rows())
+    throw SolverError("vibration modes: the stiffness matrix is not square");
+  if (mass.size() != num_dofs_)
+    throw SolverError("vibration modes: the mass vector must have one entry per DOF");
   if (!(mass.array() > 0.0).all() || !mass.allFinite())
     throw SolverError("vibration modes: every mass must be positive and finite");
   if (dofs_per_grain < 1 || num_dofs_ % dofs_per_grain != 0)
-    throw SolverError("vibration modes: the number of DOFs is not a multiple of the DOFs per grain");
+    throw SolverError(
+        "vibration modes: the number of DOFs is not a multiple of the DOFs per grain");
 
   std::vector<int> free_index(num_dofs_, 0);
   for (int dof : fixed_dofs) {
@@ -48,7 +65,8 @@ DynamicalMatrix::DynamicalMatrix(const Eigen::SparseMatrix<double> &stiffness, c
     if (fc < 0) continue;
     for (Eigen::SparseMatrix<double>::InnerIterator it(stiffness, col); it; ++it) {
       const int fr = free_index[it.row()];
-      if (fr >= 0) triplets.emplace_back(fr, fc, it.value() * inv_sqrt_mass_[fr] * inv_sqrt_mass_[fc]);
+      if (fr >= 0)
+        triplets.emplace_back(fr, fc, it.value() * inv_sqrt_mass_[fr] * inv_sqrt_mass_[fc]);
     }
   }
   matrix_.resize(nfree, nfree);
@@ -59,7 +77,8 @@ DynamicalMatrix::DynamicalMatrix(const Eigen::SparseMatrix<double> &stiffness, c
 
   for (int col = 0; col < nfree; ++col) {
     double row_sum = 0.0;    // D is symmetric: column sums are row sums
-    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix_, col); it; ++it) row_sum += std::abs(it.value());
+    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix_, col); it; ++it)
+      row_sum += std::abs(it.value());
     upper_bound_ = std::max(upper_bound_, row_sum);
   }
 
@@ -84,7 +103,8 @@ std::vector<int> DynamicalMatrix::decoupled_free_dofs() const
 
 Eigen::VectorXd DynamicalMatrix::to_dof_space(const Eigen::VectorXd &y) const
 {
-  if (y.size() != num_free()) throw SolverError("vibration modes: a mode vector must have one entry per free DOF");
+  if (y.size() != num_free())
+    throw SolverError("vibration modes: a mode vector must have one entry per free DOF");
   Eigen::VectorXd v = Eigen::VectorXd::Zero(num_dofs_);
   for (int k = 0; k < num_free(); ++k) v[free_dofs_[k]] = y[k] * inv_sqrt_mass_[k];
   return v;
@@ -92,7 +112,8 @@ Eigen::VectorXd DynamicalMatrix::to_dof_space(const Eigen::VectorXd &y) const
 
 double DynamicalMatrix::participation_ratio(const Eigen::VectorXd &y) const
 {
-  if (y.size() != num_free()) throw SolverError("vibration modes: a mode vector must have one entry per free DOF");
+  if (y.size() != num_free())
+    throw SolverError("vibration modes: a mode vector must have one entry per free DOF");
   double sum = 0.0;
   double sum_squares = 0.0;
   double grain_weight = 0.0;

@@ -1,3 +1,16 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: histogram of vibration frequencies.
 
@@ -19,7 +32,7 @@ struct FrequencyHistogram {
   Eigen::VectorXd density;
   Eigen::VectorXd density_error;    // statistical error of density (0 for exact counts)
   double bin_width = 0.0;
-  double counted = 0.0;             // number of modes in [fmin, fmax] (an estimate for KPM)
+  double counted = 0.0;    // number of modes in [fmin, fmax] (an estimate for KPM)
 };
 
 // Largest number of bins (a histogram is a global array of LAMMPS: one row per bin).
@@ -29,7 +42,8 @@ constexpr int MAX_HISTOGRAM_BINS = 1000000;
 void check_histogram_range(int nbins, double fmin, double fmax);
 
 // Exact histogram of a list of frequencies.
-FrequencyHistogram frequency_histogram(const Eigen::VectorXd &frequencies, int nbins, double fmin, double fmax);
+FrequencyHistogram frequency_histogram(const Eigen::VectorXd &frequencies, int nbins, double fmin,
+                                       double fmax);
 
 }    // namespace Acoustic
 

@@ -1,3 +1,16 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: steady harmonic response (Helmholtz problem).
 
@@ -60,7 +73,8 @@ struct MumpsSettings;
 // HelmholtzSolver takes the others
 enum class LinearSolverChoice { Auto, Ldlt, Lu, Mumps, Iterative };
 
-// "auto", "ldlt", "lu", "mumps" or "iterative"; throws SolverError listing the allowed names otherwise.
+// "auto", "ldlt", "lu", "mumps" or "iterative"; throws SolverError listing the allowed names
+// otherwise.
 LinearSolverChoice linear_solver_from_name(const std::string &name);
 std::string linear_solver_name(LinearSolverChoice choice);
 // "auto, ldlt, lu, mumps, iterative": for help and error messages.
@@ -74,13 +88,13 @@ enum class SolveStatus {
 std::string solve_status_name(SolveStatus status);
 
 struct HelmholtzSolution {
-  Eigen::VectorXcd q;                     // every DOF, prescribed ones included
+  Eigen::VectorXcd q;    // every DOF, prescribed ones included
   SolveStatus status = SolveStatus::Success;
-  double relative_residual = 0.0;         // ||A q_F - b|| / ||b||, of the factorisation used
-  std::string factorisation;              // "ldlt", "lu", "mumps" or "none" (b = 0 or no free DOF), with
-                                          // " (earlier factors, BiCGSTAB)" when they were reused
-  std::string message;                    // explanation when status != Success
-  int iterations = 0;                     // of an iterative solver (0 for the direct ones)
+  double relative_residual = 0.0;    // ||A q_F - b|| / ||b||, of the factorisation used
+  std::string factorisation;         // "ldlt", "lu", "mumps" or "none" (b = 0 or no free DOF), with
+                                     // " (earlier factors, BiCGSTAB)" when they were reused
+  std::string message;               // explanation when status != Success
+  int iterations = 0;                // of an iterative solver (0 for the direct ones)
   bool ok() const { return status == SolveStatus::Success; }
 };
 

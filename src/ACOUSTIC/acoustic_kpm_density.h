@@ -1,3 +1,16 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: density of vibrational states by the kernel
    polynomial method (KPM), at a cost linear in the number of DOFs.
@@ -31,13 +44,13 @@
 namespace Acoustic {
 
 struct KpmOptions {
-  int moments = 256;           // number of Chebyshev moments (>= 2)
-  int random_vectors = 32;     // number of random vectors of the stochastic trace (>= 2)
-  std::uint64_t seed = 2021;   // seed of the random vectors (results are reproducible)
+  int moments = 256;            // number of Chebyshev moments (>= 2)
+  int random_vectors = 32;      // number of random vectors of the stochastic trace (>= 2)
+  std::uint64_t seed = 2021;    // seed of the random vectors (results are reproducible)
 };
 
-FrequencyHistogram kpm_frequency_histogram(const DynamicalMatrix &dynamical, int nbins, double fmin, double fmax,
-                                           const KpmOptions &options = KpmOptions());
+FrequencyHistogram kpm_frequency_histogram(const DynamicalMatrix &dynamical, int nbins, double fmin,
+                                           double fmax, const KpmOptions &options = KpmOptions());
 
 }    // namespace Acoustic
 

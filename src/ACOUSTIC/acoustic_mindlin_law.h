@@ -1,3 +1,16 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: contact laws used by the vibration model.
 
@@ -57,7 +70,8 @@ struct MindlinFrictionLaw {
 // Returns 1 when f_n <= 0 (no load, nothing to reduce), mu == 0 (no friction),
 // or k_t U_t C_mu = 0; U_t = +inf (beyond the range of doubles) gives mu_min.
 double friction_factor(const MindlinFrictionLaw &law, double tangential_stiffness,
-                       double tangential_amplitude, double friction_coefficient, double normal_force);
+                       double tangential_amplitude, double friction_coefficient,
+                       double normal_force);
 
 }    // namespace Acoustic
 

@@ -1,3 +1,16 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: response of the frozen network to a delta
    pulse of its source (paper 003, Eqs. 1-4).
@@ -54,10 +67,10 @@ struct PulseProblem {
   Eigen::SparseMatrix<double> damping;      // C, same size, or 0 x 0
   Eigen::VectorXd mass;                     // diagonal of M, positive
   std::vector<int> prescribed_dofs;         // held at zero after t = 0
-  Eigen::VectorXd source;                   // s: unit displacement of the source, on prescribed DOFs
-  Eigen::VectorXd detector;                 // t_D: force pattern of the detector, on prescribed DOFs
-  int dofs_per_grain = 0;                   // DOFs stored grain by grain, translations first
-  int dimension = 0;                        // 2 or 3: the translations of a grain
+  Eigen::VectorXd source;      // s: unit displacement of the source, on prescribed DOFs
+  Eigen::VectorXd detector;    // t_D: force pattern of the detector, on prescribed DOFs
+  int dofs_per_grain = 0;      // DOFs stored grain by grain, translations first
+  int dimension = 0;           // 2 or 3: the translations of a grain
   Eigen::Vector3d direction = Eigen::Vector3d::Zero();    // of the pulse (initial condition B)
 };
 
@@ -75,12 +88,12 @@ struct PulseOptions {
 };
 
 struct PulseResponse {
-  Eigen::VectorXd times;       // the sample times
-  Eigen::VectorXd signal;      // F_sig at the sample times
-  Eigen::VectorXd snapshot;    // u at the snapshot time (DOF space, 0 on prescribed DOFs)
-  double snapshot_time = -1.0; // the time of the snapshot (integrate: the nearest step)
-  double time_step = 0.0;      // integrate: the step used
-  long steps = 0;              // integrate: steps taken
+  Eigen::VectorXd times;          // the sample times
+  Eigen::VectorXd signal;         // F_sig at the sample times
+  Eigen::VectorXd snapshot;       // u at the snapshot time (DOF space, 0 on prescribed DOFs)
+  double snapshot_time = -1.0;    // the time of the snapshot (integrate: the nearest step)
+  double time_step = 0.0;         // integrate: the step used
+  long steps = 0;                 // integrate: steps taken
   int num_free = 0;
 };
 

@@ -31,7 +31,8 @@ using namespace LAMMPS_NS;
 
 CommandArguments::CommandArguments(LAMMPS *lmp, const std::string &cmd, int n, char **words,
                                    int first) :
-    Pointers(lmp), command(cmd), narg(n), arg(words), position(first), nvalues(0)
+    Pointers(lmp),
+    command(cmd), narg(n), arg(words), position(first), nvalues(0)
 {
 }
 
@@ -94,18 +95,23 @@ bool CommandArguments::logical(int k) const
 const char *CommandArguments::group_name(int k) const
 {
   if (group->find(arg[position + k]) < 0)
-    error->all(FLERR, position + k, "{}: {} group {} does not exist; define it with the group "
-                                    "command first", command, arg[position], arg[position + k]);
+    error->all(FLERR, position + k,
+               "{}: {} group {} does not exist; define it with the group "
+               "command first",
+               command, arg[position], arg[position + k]);
   return arg[position + k];
 }
 
 const char *CommandArguments::wall_fix(int k) const
 {
   Fix *wall = modify->get_fix_by_id(arg[position + k]);
-  if (!wall || !(utils::strmatch(wall->style, "^wall/gran$") || utils::strmatch(wall->style, "^wall/gran/region$")))
-    error->all(FLERR, position + k, "{}: {} wall {} is not a fix wall/gran or wall/gran/region; "
-                                    "define the wall with one of them first", command,
-               arg[position], arg[position + k]);
+  if (!wall ||
+      !(utils::strmatch(wall->style, "^wall/gran$") ||
+        utils::strmatch(wall->style, "^wall/gran/region$")))
+    error->all(FLERR, position + k,
+               "{}: {} wall {} is not a fix wall/gran or wall/gran/region; "
+               "define the wall with one of them first",
+               command, arg[position], arg[position + k]);
   return arg[position + k];
 }
 

@@ -73,8 +73,8 @@ class CommandArguments : protected Pointers {
   const std::string command;
   const int narg;
   char **const arg;
-  int position;      // of the current keyword
-  int nvalues;       // of the keyword taken
+  int position;    // of the current keyword
+  int nvalues;     // of the keyword taken
 };
 
 }    // namespace LAMMPS_NS

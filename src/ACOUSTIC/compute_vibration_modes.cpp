@@ -87,8 +87,10 @@ ComputeVibrationModes::ComputeVibrationModes(LAMMPS *lmp, int narg, char **arg) 
     } else if (args.take("mode", 1)) {
       selected_mode = args.integer(1);
       if (selected_mode < 1)
-        args.reject(FLERR, 1, "mode must be >= 1 (modes are numbered from 1 upwards in "
-                              "frequency), got {}", selected_mode);
+        args.reject(FLERR, 1,
+                    "mode must be >= 1 (modes are numbered from 1 upwards in "
+                    "frequency), got {}",
+                    selected_mode);
     } else if (args.take("moments", 1)) {
       kpm.moments = args.integer(1);
       if (kpm.moments < 2) args.reject(FLERR, 1, "moments must be >= 2, got {}", kpm.moments);
@@ -105,8 +107,9 @@ ComputeVibrationModes::ComputeVibrationModes(LAMMPS *lmp, int narg, char **arg) 
       kpm.seed = static_cast<std::uint64_t>(seed);
       kpm_set = true;
     } else if (args.take("damping", 1)) {
-      args.reject(FLERR, 0, "keyword damping does not apply: the modes are those of the undamped "
-                            "network (use damping with fix acoustic/mindlin)");
+      args.reject(FLERR, 0,
+                  "keyword damping does not apply: the modes are those of the undamped "
+                  "network (use damping with fix acoustic/mindlin)");
     } else {
       args.unknown("stiffness, kappa_scale, ratio, model, region_walls, fixed, method, nmodes, "
                    "bins, mode, moments, vectors, seed");
@@ -117,20 +120,27 @@ ComputeVibrationModes::ComputeVibrationModes(LAMMPS *lmp, int narg, char **arg) 
   // keywords that only one method uses
   const bool kpm_method = (method == Acoustic::ModeMethod::Kpm);
   if (nmodes_set && method != Acoustic::ModeMethod::Lanczos)
-    error->all(FLERR, "{}: nmodes applies to method lanczos only (dense computes "
-                      "every mode); add method lanczos or remove nmodes", CMD);
+    error->all(FLERR,
+               "{}: nmodes applies to method lanczos only (dense computes "
+               "every mode); add method lanczos or remove nmodes",
+               CMD);
   if (kpm_set && !kpm_method)
     error->all(FLERR, "{}: moments, vectors and seed apply to method kpm only", CMD);
   if (kpm_method && nbins == 0)
-    error->all(FLERR, "{}: method kpm computes the density of states only; "
-                      "give its range with bins Nb fmin fmax", CMD);
+    error->all(FLERR,
+               "{}: method kpm computes the density of states only; "
+               "give its range with bins Nb fmin fmax",
+               CMD);
   if (kpm_method && selected_mode > 0)
-    error->all(FLERR, "{}: method kpm computes no individual mode; use method "
-                      "dense or lanczos with keyword mode", CMD);
+    error->all(FLERR,
+               "{}: method kpm computes no individual mode; use method "
+               "dense or lanczos with keyword mode",
+               CMD);
   if (method == Acoustic::ModeMethod::Lanczos && selected_mode > nmodes)
-    error->all(FLERR, "{}: mode {} is out of range: method lanczos computes "
-                      "nmodes = {} modes; raise nmodes to at least {}", CMD, selected_mode, nmodes,
-               selected_mode);
+    error->all(FLERR,
+               "{}: mode {} is out of range: method lanczos computes "
+               "nmodes = {} modes; raise nmodes to at least {}",
+               CMD, selected_mode, nmodes, selected_mode);
 
   ndof = Acoustic::dofs_per_grain(domain->dimension, settings.model);
   network.reset(new VibrationNetwork(lmp, settings, CMD));
@@ -202,12 +212,15 @@ void ComputeVibrationModes::init()
   if (counts[0] == 0)
     error->all(FLERR, "{}: compute group {} has no atom", CMD, group->names[igroup]);
   if (fixed_groupbit && counts[1] == 0)
-    error->all(FLERR, "{}: fixed group {} has no atom in the compute group {}; the clamped atoms "
-                      "must belong to the compute group", CMD, fixed_group, group->names[igroup]);
+    error->all(FLERR,
+               "{}: fixed group {} has no atom in the compute group {}; the clamped atoms "
+               "must belong to the compute group",
+               CMD, fixed_group, group->names[igroup]);
   if (outside > 0)
-    error->all(FLERR, "{}: {} atoms of the fixed group {} are not in the compute group {}; the "
-                      "clamped atoms must all belong to the compute group", CMD, outside,
-               fixed_group, group->names[igroup]);
+    error->all(FLERR,
+               "{}: {} atoms of the fixed group {} are not in the compute group {}; the "
+               "clamped atoms must all belong to the compute group",
+               CMD, outside, fixed_group, group->names[igroup]);
   solved_step = -1;    // the packing may have changed since the last run
 }
 
@@ -230,7 +243,8 @@ std::string ComputeVibrationModes::solve_on_rank0(bool with_shapes)
                                               fixed_dofs, ndof);
     if (dynamical.num_free() == 0)
       return fmt::format("every atom of the compute group {} is in the fixed group {}: no degree "
-                         "of freedom is left", group->names[igroup], fixed_group);
+                         "of freedom is left",
+                         group->names[igroup], fixed_group);
 
     Acoustic::VibrationModes modes;
     Acoustic::FrequencyHistogram hist;
@@ -251,8 +265,9 @@ std::string ComputeVibrationModes::solve_on_rank0(bool with_shapes)
     const int nfound = static_cast<int>(modes.frequencies.size());
     if (selected_mode > nfound)
       return fmt::format("mode {} is out of range: method {} found {} modes of the network ({} "
-                         "free DOFs); choose mode between 1 and {}", selected_mode,
-                         Acoustic::mode_method_name(method), nfound, dynamical.num_free(), nfound);
+                         "free DOFs); choose mode between 1 and {}",
+                         selected_mode, Acoustic::mode_method_name(method), nfound,
+                         dynamical.num_free(), nfound);
     if (nbins > 0 && method != Acoustic::ModeMethod::Kpm)
       hist = Acoustic::frequency_histogram(modes.frequencies, nbins, fmin, fmax);
 
@@ -277,7 +292,8 @@ std::string ComputeVibrationModes::solve_on_rank0(bool with_shapes)
   } catch (std::bad_alloc &) {
     if (method == Acoustic::ModeMethod::Kpm)
       return fmt::format("out of memory in the kernel polynomial method ({} moments, {} vectors); "
-                         "use fewer moments or vectors", kpm.moments, kpm.random_vectors);
+                         "use fewer moments or vectors",
+                         kpm.moments, kpm.random_vectors);
     return "out of memory in the eigensolver; use method lanczos or kpm for large networks";
   }
   return std::string();

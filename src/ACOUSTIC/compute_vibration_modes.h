@@ -50,26 +50,26 @@ class ComputeVibrationModes : public Compute {
   Acoustic::ModeMethod method;
   std::string fixed_group;    // empty: no fixed atoms
   int fixed_groupbit;
-  int nmodes;                 // method lanczos
-  int nbins;                  // 0: no histogram
+  int nmodes;    // method lanczos
+  int nbins;     // 0: no histogram
   double fmin, fmax;
-  int selected_mode;          // 1-based index of the mode shape output, 0: none
+  int selected_mode;    // 1-based index of the mode shape output, 0: none
   Acoustic::KpmOptions kpm;
   std::unique_ptr<VibrationNetwork> network;
-  int ndof;                   // DOFs per grain
+  int ndof;    // DOFs per grain
 
   // results of the last solve, valid on timestep solved_step
   bigint solved_step;
   bool solved_with_shapes;
-  double nzero;                           // number of zero modes
-  std::vector<double> frequencies;        // every rank
-  std::vector<double> participation;      // rank 0
-  Eigen::VectorXd selected_shape;         // rank 0: DOF-space shape of selected_mode
+  double nzero;                         // number of zero modes
+  std::vector<double> frequencies;      // every rank
+  std::vector<double> participation;    // rank 0
+  Eigen::VectorXd selected_shape;       // rank 0: DOF-space shape of selected_mode
 
-  double **histogram;        // global array, nbins x 3
-  double **mode_rows;        // local array, rank 0: (index, f, PR) per mode
+  double **histogram;    // global array, nbins x 3
+  double **mode_rows;    // local array, rank 0: (index, f, PR) per mode
   int nmode_rows_max;
-  double **shape_atom;       // per-atom output
+  double **shape_atom;    // per-atom output
   int nmax;
 
   void solve(bool need_shapes);

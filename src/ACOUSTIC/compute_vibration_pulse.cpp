@@ -46,15 +46,14 @@
 using namespace LAMMPS_NS;
 
 static const char CMD[] = "compute vibration/pulse";
-static constexpr int SIGNAL_COLUMNS = 2;        // time, F_sig
+static constexpr int SIGNAL_COLUMNS = 2;             // time, F_sig
 static constexpr int AUTO_INTEGRATE_DOFS = 10000;    // method auto: integrate above this
 
 /* ---------------------------------------------------------------------- */
 
 ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), fixed_groupbit(0), direction_given(false), method_given(false), ndof(0),
-    solved_step(-1),
-    signal(nullptr), snapshot_atom(nullptr), nmax(0)
+    Compute(lmp, narg, arg), fixed_groupbit(0), direction_given(false), method_given(false),
+    ndof(0), solved_step(-1), signal(nullptr), snapshot_atom(nullptr), nmax(0)
 {
   if (lmp->citeme) lmp->citeme->add(AcousticCitations::confined_wave_propagation);
   CommandArguments args(lmp, CMD, narg, arg, 3);
@@ -95,7 +94,8 @@ ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int narg, char **arg) 
         args.reject(FLERR, 1, "samples must be in [2, 1e7], got {}", options.samples);
     } else if (args.take("timestep", 1)) {
       options.time_step = args.number(1);
-      if (options.time_step <= 0.0) args.reject(FLERR, 1, "timestep must be > 0, got {}", options.time_step);
+      if (options.time_step <= 0.0)
+        args.reject(FLERR, 1, "timestep must be > 0, got {}", options.time_step);
     } else if (args.take("max_steps", 1)) {
       const double steps = args.number(1);
       if (!(steps >= 1.0 && steps <= 9e18))
@@ -121,15 +121,17 @@ ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int narg, char **arg) 
   if (dim == 2 && direction[2] != 0.0)
     error->all(FLERR, "{}: in 2D the direction must lie in the xy plane", CMD);
   const double largest = MAX(fabs(direction[0]), MAX(fabs(direction[1]), fabs(direction[2])));
-  if (largest == 0.0)
-    error->all(FLERR, "{}: direction must not be the zero vector", CMD);
+  if (largest == 0.0) error->all(FLERR, "{}: direction must not be the zero vector", CMD);
   for (double &d : direction) d /= largest;
-  const double norm = sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
-                           direction[2] * direction[2]);
+  const double norm =
+      sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
   for (double &d : direction) d /= norm;
-  if (method_given && options.method == Acoustic::PulseMethod::Modes && settings.damping_ratio > 0.0)
-    error->all(FLERR, "{}: method modes needs an undamped network; use method "
-                      "integrate with damping", CMD);
+  if (method_given && options.method == Acoustic::PulseMethod::Modes &&
+      settings.damping_ratio > 0.0)
+    error->all(FLERR,
+               "{}: method modes needs an undamped network; use method "
+               "integrate with damping",
+               CMD);
 
   ndof = Acoustic::dofs_per_grain(dim, settings.model);
   network.reset(new VibrationNetwork(lmp, settings, CMD));
@@ -173,10 +175,11 @@ ComputeVibrationPulse::~ComputeVibrationPulse()
 void ComputeVibrationPulse::parse_endpoint(CommandArguments &args, const char *word, Endpoint &end)
 {
   if (!args.more() || strcmp(args.keyword(), word) != 0)
-    error->all(FLERR, args.more() ? args.index() : Error::NOPOINTER, "{}: expected compute ID group-ID vibration/pulse source "
-                                    "group-ID|wall fix-ID detector group-ID|wall fix-ID [keyword "
-                                    "value ...], got '{}' where '{}' belongs", CMD,
-               args.more() ? args.keyword() : "", word);
+    error->all(FLERR, args.more() ? args.index() : Error::NOPOINTER,
+               "{}: expected compute ID group-ID vibration/pulse source "
+               "group-ID|wall fix-ID detector group-ID|wall fix-ID [keyword "
+               "value ...], got '{}' where '{}' belongs",
+               CMD, args.more() ? args.keyword() : "", word);
   args.expect(word, 1);
   if (strcmp(args.word(1), "wall") == 0) {
     args.expect(word, 2);
@@ -196,9 +199,10 @@ void ComputeVibrationPulse::init_endpoint(Endpoint &end, const char *word)
   if (!end.wall_fix.empty()) {
     end.wall = network->wall_of_fix(end.wall_fix);
     if (end.wall < 0)
-      error->all(FLERR, "{}: {} wall {} is not a wall of the vibration network (it must be a fix "
-                        "wall/gran xplane, yplane or zplane, or a fix wall/gran/region)", CMD,
-                 word, end.wall_fix);
+      error->all(FLERR,
+                 "{}: {} wall {} is not a wall of the vibration network (it must be a fix "
+                 "wall/gran xplane, yplane or zplane, or a fix wall/gran/region)",
+                 CMD, word, end.wall_fix);
     return;
   }
   const int igroup_end = group->find(end.group);
@@ -207,16 +211,20 @@ void ComputeVibrationPulse::init_endpoint(Endpoint &end, const char *word)
   bigint counts_local[2] = {0, 0}, counts[2];
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & end.groupbit)) continue;
-    if (atom->mask[i] & groupbit) counts_local[0]++;
-    else counts_local[1]++;
+    if (atom->mask[i] & groupbit)
+      counts_local[0]++;
+    else
+      counts_local[1]++;
   }
   MPI_Allreduce(counts_local, counts, 2, MPI_LMP_BIGINT, MPI_SUM, world);
   if (counts[0] == 0)
     error->all(FLERR, "{}: {} group {} has no atom in the compute group {}", CMD, word, end.group,
                group->names[igroup]);
   if (counts[1] > 0)
-    error->all(FLERR, "{}: {} atoms of the {} group {} are not in the compute group {}; they must "
-                      "all belong to it", CMD, counts[1], word, end.group, group->names[igroup]);
+    error->all(FLERR,
+               "{}: {} atoms of the {} group {} are not in the compute group {}; they must "
+               "all belong to it",
+               CMD, counts[1], word, end.group, group->names[igroup]);
 }
 
 /* ---------------------------------------------------------------------- */

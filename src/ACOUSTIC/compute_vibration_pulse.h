@@ -63,8 +63,8 @@ class ComputeVibrationPulse : public Compute {
 
   bigint solved_step;
   double info[NVECTOR];
-  double **signal;             // global array: samples x (time, F_sig)
-  double **snapshot_atom;      // per-atom output: displacement at the snapshot time
+  double **signal;           // global array: samples x (time, F_sig)
+  double **snapshot_atom;    // per-atom output: displacement at the snapshot time
   int nmax;
   Eigen::VectorXd snapshot;    // rank 0
 

@@ -76,23 +76,23 @@ class FixAcousticMindlin : public Fix {
     TIME_SOLVE,            // ... rest of the solve (triangular solves, residual)
     TIME_UPDATE,           // ... scatter of the amplitudes and friction update
     // the counts and the total time go on from a restart file's values
-    NANALYSES,             // symbolic analyses since the fix was first defined
-    NFACTORISATIONS,       // numeric factorisations since then
-    NREUSES,               // solves done with earlier factors (BiCGSTAB) since then
-    TIME_TOTAL,            // wall time of all updates since then
-    NITERATIONS,           // Krylov iterations of the last solve (solver iterative)
+    NANALYSES,          // symbolic analyses since the fix was first defined
+    NFACTORISATIONS,    // numeric factorisations since then
+    NREUSES,            // solves done with earlier factors (BiCGSTAB) since then
+    TIME_TOTAL,         // wall time of all updates since then
+    NITERATIONS,        // Krylov iterations of the last solve (solver iterative)
     NVECTOR
   };
 
  private:
   double frequency, amplitude;
-  std::string source_group;      // source group-ID, or
-  std::string source_wall_fix;   // source wall fix-ID (one of the two is empty)
+  std::string source_group;       // source group-ID, or
+  std::string source_wall_fix;    // source wall fix-ID (one of the two is empty)
   int source_groupbit;
-  int source_wall;               // index of the source wall plane, -1 for a group
+  int source_wall;    // index of the source wall plane, -1 for a group
   double direction[3];
-  int direction_axis;    // 0, 1, 2 if the direction is along x, y, z, else -1
-  bool direction_given;  // false: the default, normal to a source wall
+  int direction_axis;      // 0, 1, 2 if the direction is along x, y, z, else -1
+  bool direction_given;    // false: the default, normal to a source wall
   SourceMode source_mode;
   VibrationNetworkSettings settings;
   Acoustic::MindlinFrictionLaw law;
@@ -103,30 +103,31 @@ class FixAcousticMindlin : public Fix {
   bool ordering_given;    // false: METIS in 3D (when built with it), MUMPS's own in 2D
 
   std::unique_ptr<VibrationNetwork> network;
-  std::unique_ptr<Acoustic::HelmholtzSolver> solver;           // auto, lu, ldlt: on rank 0
-  std::unique_ptr<Acoustic::KrylovHelmholtzSolver> krylov;     // iterative: every rank
-  std::unique_ptr<Acoustic::DistributedMumpsSolver> mumps;     // mumps: every rank
+  std::unique_ptr<Acoustic::HelmholtzSolver> solver;          // auto, lu, ldlt: on rank 0
+  std::unique_ptr<Acoustic::KrylovHelmholtzSolver> krylov;    // iterative: every rank
+  std::unique_ptr<Acoustic::DistributedMumpsSolver> mumps;    // mumps: every rank
   bool distributed() const { return krylov || mumps; }
-  int ndof;      // DOFs per grain of the network
+  int ndof;    // DOFs per grain of the network
   int damped;
 
-  bigint last_update;           // step of the last update of the factors, -1: none yet
-  bool factors_committed;       // the factors of the last update reached the end of a run
-  std::uint64_t atoms_at_end;   // fingerprint of the atoms at the end of the last run
-  std::uint64_t settings_signature;   // hash of the words of the fix command after its ID
-  bool restart_settings_differ;       // the restart file read was written with other settings
+  bigint last_update;                  // step of the last update of the factors, -1: none yet
+  bool factors_committed;              // the factors of the last update reached the end of a run
+  std::uint64_t atoms_at_end;          // fingerprint of the atoms at the end of the last run
+  std::uint64_t settings_signature;    // hash of the words of the fix command after its ID
+  bool restart_settings_differ;        // the restart file read was written with other settings
 
-  double **q_atom;            // complex DOF amplitudes per atom, (re, im) pairs
-  bool q_restored;            // q_atom of this process's atoms came from a restart file
-  bool last_solution_valid;   // q_atom holds the solution of an update (a start for reuse yes)
-  bool warned_idle_source;    // the WARNING of a source wall without contacts was printed
-  std::uint64_t solved_network;    // fingerprint of the network of the last solve (reuse yes), 0: none
-  long unchanged_networks;         // updates that found that network unchanged (no solve)
+  double **q_atom;             // complex DOF amplitudes per atom, (re, im) pairs
+  bool q_restored;             // q_atom of this process's atoms came from a restart file
+  bool last_solution_valid;    // q_atom holds the solution of an update (a start for reuse yes)
+  bool warned_idle_source;     // the WARNING of a source wall without contacts was printed
+  std::uint64_t
+      solved_network;         // fingerprint of the network of the last solve (reuse yes), 0: none
+  long unchanged_networks;    // updates that found that network unchanged (no solve)
   double **amplitude_atom;    // per-atom output: translational amplitudes
   double **contact_array;     // local output: one row per contact
   int ncontact_rows, maxcontact_rows;
   double stats[NVECTOR];
-  double counts_before[3];       // analyses, factorisations, reuses of earlier processes (restart)
+  double counts_before[3];      // analyses, factorisations, reuses of earlier processes (restart)
   Eigen::VectorXcd solution;    // rank 0: DOF amplitudes of the last successful solve
                                 // (solver iterative: of this processor's part)
 

@@ -29,8 +29,9 @@ FixAcousticState::FixAcousticState(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), recorded(0), valid(false)
 {
   if (narg != 4)
-    error->all(FLERR, "Fix ACOUSTIC/STATE is internal to the ACOUSTIC package: expected fix ID "
-                      "group-ID ACOUSTIC/STATE owner-compute-ID");
+    error->all(FLERR,
+               "Fix ACOUSTIC/STATE is internal to the ACOUSTIC package: expected fix ID "
+               "group-ID ACOUSTIC/STATE owner-compute-ID");
   owner = arg[3];
 }
 

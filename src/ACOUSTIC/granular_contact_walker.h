@@ -42,21 +42,21 @@ namespace Granular_NS {
 
 // one touching contact of an owned atom, with another atom or with a wall
 struct GranularContact {
-  int i, j;                 // local indices: i owned, j owned or ghost; j = -1 for a wall
-  int wall;                 // the wall plane (GranularContactWalker::walls()), -1 for two atoms
-  bool owned;               // this processor counts the contact (newton off lists a
-                            // contact across sub-domains on both of its processors)
-  double n[3];              // unit normal (x_i - x_j) / |x_i - x_j|, from the wall for a wall
-  double radi, radj;        // radj = 0 for a (flat) wall
-  double delta;             // overlap
-  double fn;                // elastic normal force F_n(delta), damping excluded
-  double fncrit;            // normal force of the Coulomb limit (F_n,crit of the normal
-                            // model, damping excluded; = fn unless the model is cohesive)
-  double kn;                // dF_n/d(delta)
-  double kt;                // stiffness of the tangential spring
-  double mu;                // friction coefficient of the tangential model
-  double *factor;           // history slot of the friction factor (see AcousticFrictionFactor);
-                            // nullptr for a wall whose tangential model has none
+  int i, j;             // local indices: i owned, j owned or ghost; j = -1 for a wall
+  int wall;             // the wall plane (GranularContactWalker::walls()), -1 for two atoms
+  bool owned;           // this processor counts the contact (newton off lists a
+                        // contact across sub-domains on both of its processors)
+  double n[3];          // unit normal (x_i - x_j) / |x_i - x_j|, from the wall for a wall
+  double radi, radj;    // radj = 0 for a (flat) wall
+  double delta;         // overlap
+  double fn;            // elastic normal force F_n(delta), damping excluded
+  double fncrit;        // normal force of the Coulomb limit (F_n,crit of the normal
+                        // model, damping excluded; = fn unless the model is cohesive)
+  double kn;            // dF_n/d(delta)
+  double kt;            // stiffness of the tangential spring
+  double mu;            // friction coefficient of the tangential model
+  double *factor;       // history slot of the friction factor (see AcousticFrictionFactor);
+                        // nullptr for a wall whose tangential model has none
 };
 
 // a rigid wall of the network: a plane of fix wall/gran (one fix may have a
@@ -64,10 +64,10 @@ struct GranularContact {
 // wall/gran/region (its contacts found by the region, as the fix finds them)
 struct WallPlane {
   std::string fix_id;
-  int side;                 // 0: the lower plane of the fix, 1: the upper one (region: 0)
-  int axis;                 // 0, 1, 2: normal along x, y, z; -1: a region's surface
-  double position;          // coordinate of the plane along its axis (region: unused)
-  bool region;              // a fix wall/gran/region
+  int side;           // 0: the lower plane of the fix, 1: the upper one (region: 0)
+  int axis;           // 0, 1, 2: normal along x, y, z; -1: a region's surface
+  double position;    // coordinate of the plane along its axis (region: unused)
+  bool region;        // a fix wall/gran/region
 };
 
 class GranularContactWalker : protected Pointers {
@@ -116,12 +116,12 @@ class GranularContactWalker : protected Pointers {
   std::vector<WallPlane> planes;
   bool region_walls = true;    // the argument of the last init()
 
-  void check_model(Granular_NS::GranularModel *model, const std::string &where,
-                   bool needs_factor);
+  void check_model(Granular_NS::GranularModel *model, const std::string &where, bool needs_factor);
   void locate();    // pair granular and its history fix, nullptr if absent
   void locate_walls(bool with_regions);
   bool neighbor_history_ready() const;    // collective
-  void collect_pair(std::vector<GranularContact> &contacts, int groupbit, class CollectiveError &errors);
+  void collect_pair(std::vector<GranularContact> &contacts, int groupbit,
+                    class CollectiveError &errors);
   void add_wall_contact(Granular_NS::GranularModel *model, int i, int wall,
                         std::vector<GranularContact> &contacts, class CollectiveError &errors);
   void collect_region_wall(std::vector<GranularContact> &contacts, int groupbit, int wall,

@@ -73,7 +73,8 @@ void mix_atom_order(Fingerprint &f, Atom *atom)
 {
   f.mix(static_cast<std::uint64_t>(atom->nlocal));
   f.mix(static_cast<std::uint64_t>(atom->nghost));
-  for (int i = 0; i < atom->nlocal + atom->nghost; i++) f.mix(static_cast<std::uint64_t>(atom->tag[i]));
+  for (int i = 0; i < atom->nlocal + atom->nghost; i++)
+    f.mix(static_cast<std::uint64_t>(atom->tag[i]));
 }
 
 }    // namespace

@@ -52,7 +52,8 @@ bool VibrationNetworkSettings::parse(CommandArguments &args, bool allow_damping)
       youngs_modulus = args.number(2);
       poisson_ratio = args.number(3);
       if (youngs_modulus <= 0.0)
-        args.reject(FLERR, 2, "stiffness hertz needs Young's modulus E > 0, got {}", youngs_modulus);
+        args.reject(FLERR, 2, "stiffness hertz needs Young's modulus E > 0, got {}",
+                    youngs_modulus);
       if (poisson_ratio <= -1.0 || poisson_ratio >= 0.5)
         args.reject(FLERR, 3, "stiffness hertz needs -1 < nu < 0.5, got {}", poisson_ratio);
     } else {
@@ -63,8 +64,10 @@ bool VibrationNetworkSettings::parse(CommandArguments &args, bool allow_damping)
     // a factor on the Hertz constant of a real material: far outside
     // 1e-100 .. 1e100 the stiffnesses leave the range of doubles
     if (!(kappa_scale >= 1e-100 && kappa_scale <= 1e100))
-      args.reject(FLERR, 1, "kappa_scale must be in [1e-100, 1e100] (a factor on the Hertz "
-                            "constant), got {}", kappa_scale);
+      args.reject(FLERR, 1,
+                  "kappa_scale must be in [1e-100, 1e100] (a factor on the Hertz "
+                  "constant), got {}",
+                  kappa_scale);
   } else if (args.take("ratio", 1)) {
     ratio = args.number(1);
     if (ratio < 0.0) args.reject(FLERR, 1, "ratio k_t/k_n must be >= 0, got {}", ratio);
@@ -78,7 +81,8 @@ bool VibrationNetworkSettings::parse(CommandArguments &args, bool allow_damping)
     region_walls = args.logical(1);
   } else if (allow_damping && args.take("damping", 1)) {
     damping_ratio = args.number(1);
-    if (damping_ratio < 0.0) args.reject(FLERR, 1, "damping ratio must be >= 0, got {}", damping_ratio);
+    if (damping_ratio < 0.0)
+      args.reject(FLERR, 1, "damping ratio must be >= 0, got {}", damping_ratio);
   } else {
     return false;
   }
@@ -90,8 +94,8 @@ bool VibrationNetworkSettings::parse(CommandArguments &args, bool allow_damping)
 
 VibrationNetwork::VibrationNetwork(LAMMPS *lmp, const VibrationNetworkSettings &s,
                                    const std::string &cmd) :
-    Pointers(lmp), settings(s), command(cmd), walker(lmp, cmd), ncontacts_all(0), ngrains_all(0),
-    wall_tag_base(0)
+    Pointers(lmp),
+    settings(s), command(cmd), walker(lmp, cmd), ncontacts_all(0), ngrains_all(0), wall_tag_base(0)
 {
 }
 
@@ -113,7 +117,8 @@ void VibrationNetwork::add_state_fix(const std::string &owner_id, const std::str
 void VibrationNetwork::delete_state_fix()
 {
   // at the end of LAMMPS the fixes may be gone already
-  if (!state_fix_id.empty() && modify && modify->get_fix_by_id(state_fix_id)) modify->delete_fix(state_fix_id);
+  if (!state_fix_id.empty() && modify && modify->get_fix_by_id(state_fix_id))
+    modify->delete_fix(state_fix_id);
 }
 
 void VibrationNetwork::require_current_state(const std::string &owner) const
@@ -121,9 +126,11 @@ void VibrationNetwork::require_current_state(const std::string &owner) const
   if (update->whichflag != 0 || state_fix_id.empty()) return;
   const auto *state = dynamic_cast<FixAcousticState *>(modify->get_fix_by_id(state_fix_id));
   if (!state || !state->current())
-    error->all(FLERR, "{}: the system changed since the last run (atoms moved, created or deleted, "
-                      "the box, the pair or wall coefficients, the walls): its contacts are those of "
-                      "the next run's setup; evaluate it after 'run 0'", owner);
+    error->all(FLERR,
+               "{}: the system changed since the last run (atoms moved, created or deleted, "
+               "the box, the pair or wall coefficients, the walls): its contacts are those of "
+               "the next run's setup; evaluate it after 'run 0'",
+               owner);
 }
 
 int VibrationNetwork::dofs_per_grain() const
@@ -141,8 +148,10 @@ int VibrationNetwork::wall_of_fix(const std::string &fix_id) const
   for (std::size_t k = 0; k < walls().size(); k++) {
     if (walls()[k].fix_id != fix_id) continue;
     if (found >= 0)
-      error->all(FLERR, "{}: fix {} has two wall planes; give the source or detector plane a fix "
-                        "wall/gran of its own", command, fix_id);
+      error->all(FLERR,
+                 "{}: fix {} has two wall planes; give the source or detector plane a fix "
+                 "wall/gran of its own",
+                 command, fix_id);
     found = static_cast<int>(k);
   }
   return found;
@@ -154,9 +163,10 @@ void VibrationNetwork::wall_normal(int wall, double *normal) const
 {
   normal[0] = normal[1] = normal[2] = 0.0;
   if (walls()[wall].axis < 0)
-    error->all(FLERR, "{}: fix {} is a wall/gran/region, whose surface has no single normal; "
-                      "give the direction of its drive with the keyword direction", command,
-               walls()[wall].fix_id);
+    error->all(FLERR,
+               "{}: fix {} is a wall/gran/region, whose surface has no single normal; "
+               "give the direction of its drive with the keyword direction",
+               command, walls()[wall].fix_id);
   normal[walls()[wall].axis] = 1.0;
 }
 
@@ -221,8 +231,8 @@ void VibrationNetwork::collect(int groupbit)
 
 void VibrationNetwork::apply_settings(GranularContact &c) const
 {
-  const double default_ratio =
-      (settings.stiffness == VibrationNetworkSettings::HERTZ) ? 2.0 / 7.0 : -1.0;
+  const double default_ratio = (settings.stiffness == VibrationNetworkSettings::HERTZ) ? 2.0 / 7.0
+                                                                                       : -1.0;
   const double ratio = (settings.ratio >= 0.0) ? settings.ratio : default_ratio;
   if (settings.stiffness == VibrationNetworkSettings::HERTZ) {
     // a flat wall is a body of infinite radius
@@ -296,7 +306,8 @@ bool VibrationNetwork::network_contact(GranularContact &c, double &cn, double &c
   if (!(std::isfinite(c.kn) && std::isfinite(c.kt) && std::isfinite(cn) && std::isfinite(ct))) {
     errors.report(fmt::format("{}: {} has a non-finite stiffness (k_n = {}, k_t = {}) or "
                               "dashpot; check the contact model's coefficients and the keywords "
-                              "stiffness, kappa_scale, ratio, damping", command, what(), c.kn, c.kt));
+                              "stiffness, kappa_scale, ratio, damping",
+                              command, what(), c.kn, c.kt));
     return false;
   }
   // open or tensile contacts carry no stiffness and stay out of the network
@@ -372,9 +383,11 @@ void VibrationNetwork::build_local(int groupbit, const std::vector<int> &marker_
       grain_of_atom[c.j] = static_cast<int>(part.atoms.size());
       part.atoms.push_back(c.j);
     }
-    springs.push_back({c.i, c.wall < 0 ? c.j : -1 - c.wall, {c.n[0], c.n[1], c.n[2]}, c.kn, c.kt, cn, ct});
+    springs.push_back(
+        {c.i, c.wall < 0 ? c.j : -1 - c.wall, {c.n[0], c.n[1], c.n[2]}, c.kn, c.kt, cn, ct});
   }
-  bigint counts_local[2] = {static_cast<bigint>(springs.size()), static_cast<bigint>(part.num_owned)};
+  bigint counts_local[2] = {static_cast<bigint>(springs.size()),
+                            static_cast<bigint>(part.num_owned)};
   bigint counts_all[2];
   MPI_Allreduce(counts_local, counts_all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
   ncontacts_all = counts_all[0];
@@ -398,12 +411,12 @@ void VibrationNetwork::build_local(int groupbit, const std::vector<int> &marker_
   network_contacts.reserve(springs.size());
   for (const Spring &s : springs) {
     const int gj = (s.j >= 0) ? grain_of_atom[s.j] : part.wall_nodes[-1 - s.j];
-    network_contacts.push_back({grain_of_atom[s.i], gj, Eigen::Vector3d(s.n[0], s.n[1], s.n[2]), s.kn,
-                                s.kt, s.cn, s.ct});
+    network_contacts.push_back(
+        {grain_of_atom[s.i], gj, Eigen::Vector3d(s.n[0], s.n[1], s.n[2]), s.kn, s.kt, s.cn, s.ct});
   }
   try {
-    part.network.reset(new Acoustic::ContactNetwork(domain->dimension, settings.model,
-                                                    std::move(grains), std::move(network_contacts)));
+    part.network.reset(new Acoustic::ContactNetwork(
+        domain->dimension, settings.model, std::move(grains), std::move(network_contacts)));
   } catch (Acoustic::SolverError &e) {
     errors.report(fmt::format("{}: cannot build the contact network: {}", command, e.what()));
   }
@@ -442,8 +455,9 @@ std::vector<Acoustic::Grain> VibrationNetwork::index_grains(const std::vector<do
   const int ngrains = static_cast<int>(words.size() / GRAIN_WORDS);
   std::vector<int> order(ngrains);
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return words[GRAIN_WORDS * a] < words[GRAIN_WORDS * b]; });
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return words[GRAIN_WORDS * a] < words[GRAIN_WORDS * b];
+  });
   tags_all.resize(ngrains);
   sent_grain_index.assign(ngrains, 0);
   marked.assign(nmarkers, std::vector<int>());
@@ -476,7 +490,8 @@ std::vector<Acoustic::Grain> VibrationNetwork::index_grains(const std::vector<do
    rank 0: contacts between grain indices, sorted
 ------------------------------------------------------------------------- */
 
-std::vector<Acoustic::Contact> VibrationNetwork::index_contacts(const std::vector<double> &words) const
+std::vector<Acoustic::Contact>
+VibrationNetwork::index_contacts(const std::vector<double> &words) const
 {
   // grain index of an atom ID: a table when IDs are at most a few times the
   // number of grains, a binary search in the sorted IDs otherwise
@@ -506,9 +521,10 @@ std::vector<Acoustic::Contact> VibrationNetwork::index_contacts(const std::vecto
     c.cn = w[7];
     c.ct = w[8];
   }
-  std::sort(result.begin(), result.end(), [](const Acoustic::Contact &a, const Acoustic::Contact &b) {
-    return (a.i < b.i) || (a.i == b.i && a.j < b.j);
-  });
+  std::sort(result.begin(), result.end(),
+            [](const Acoustic::Contact &a, const Acoustic::Contact &b) {
+              return (a.i < b.i) || (a.i == b.i && a.j < b.j);
+            });
   return result;
 }
 
@@ -585,7 +601,8 @@ void VibrationNetwork::scatter_displacements(const Eigen::VectorXd &values, doub
     m += ndof;
     for (int k = 0; k < dim; k++) out[i][k] = grain[k];
     if (!rotations) continue;
-    if (dim == 2) out[i][5] = grain[dim];
+    if (dim == 2)
+      out[i][5] = grain[dim];
     else
       for (int k = 0; k < 3; k++) out[i][3 + k] = grain[dim + k];
   }

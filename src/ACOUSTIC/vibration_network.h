@@ -57,9 +57,9 @@ struct VibrationNetworkSettings {
 struct LocalNetworkPart {
   std::unique_ptr<Acoustic::ContactNetwork> network;
   int num_owned = 0;
-  std::vector<int> atoms;                     // local atom index of each grain that is an atom
-  std::vector<std::vector<int>> marked;       // the grains (owned or ghost) of each marker
-  std::vector<int> wall_nodes;                // grain of each wall plane
+  std::vector<int> atoms;                  // local atom index of each grain that is an atom
+  std::vector<std::vector<int>> marked;    // the grains (owned or ghost) of each marker
+  std::vector<int> wall_nodes;             // grain of each wall plane
 };
 
 class VibrationNetwork : protected Pointers {
