@@ -35,6 +35,9 @@
 #include "region.h"
 
 #include <cmath>
+#include <map>
+#include <typeindex>
+#include <typeinfo>
 
 using namespace LAMMPS_NS;
 using namespace Granular_NS;
@@ -63,18 +66,38 @@ double normal_force_at(GranularModel *model, double delta)
   return model->normal_model->calculate_forces();
 }
 
-// dF_n/d(delta) at overlap delta where the force is fn: closed form for the
-// models whose force is a power of delta (plus a constant), otherwise a
-// centred difference of the model's own force
+// The normal models whose force is a power of the overlap (plus a
+// constant), keyed by their class (exactly: a class derived from one of
+// them may change the force law), with the closed form of their stiffness.
+enum class NormalLaw { LINEAR, HERTZ, DMT, OTHER };
+
+NormalLaw normal_law(const GranSubModNormal *normal)
+{
+  static const std::map<std::type_index, NormalLaw> laws = {
+      {typeid(GranSubModNormalHooke), NormalLaw::LINEAR},
+      {typeid(GranSubModNormalHertz), NormalLaw::HERTZ},
+      {typeid(GranSubModNormalHertzMaterial), NormalLaw::HERTZ},
+      {typeid(GranSubModNormalDMT), NormalLaw::DMT}};
+  const auto law = laws.find(typeid(*normal));
+  return law == laws.end() ? NormalLaw::OTHER : law->second;
+}
+
+// dF_n/d(delta) at overlap delta where the force is fn: the closed form of
+// the power laws, otherwise a centred difference of the model's own force
 double normal_stiffness(GranularModel *model, double delta, double fn)
 {
-  const std::string &name = model->normal_model->name;
-  if (name == "hooke") return model->normal_model->coeffs[0];
-  if (name == "hertz" || name == "hertz/material") return 1.5 * fn / delta;
-  if (name == "dmt") {
-    // F = k a delta - 4 pi w Reff with a = sqrt(Reff delta)
-    const double pulloff = 4.0 * M_PI * model->normal_model->coeffs[3] * model->Reff;
-    return 1.5 * (fn + pulloff) / delta;
+  switch (normal_law(model->normal_model)) {
+    case NormalLaw::LINEAR:
+      return model->normal_model->coeffs[0];
+    case NormalLaw::HERTZ:
+      return 1.5 * fn / delta;
+    case NormalLaw::DMT: {
+      // F = k a delta - 4 pi w Reff with a = sqrt(Reff delta)
+      const double pulloff = 4.0 * M_PI * model->normal_model->coeffs[3] * model->Reff;
+      return 1.5 * (fn + pulloff) / delta;
+    }
+    case NormalLaw::OTHER:
+      break;
   }
   const double h = DIFFERENCE_STEP * fmax(fabs(delta), 1.0e-8 * model->Reff);
   const double fplus = normal_force_at(model, delta + h);
@@ -123,9 +146,11 @@ void GranularContactWalker::init(bool with_regions)
   region_walls = with_regions;
   locate();
   if (!pair)
-    error->all(FLERR, "{} requires pair_style granular with a tangential <model>/acoustic "
-                      "sub-model (e.g. pair_coeff * * hertz/material 1e8 0.5 0.3 tangential "
-                      "mindlin/acoustic NULL 1.0 0.5)", command);
+    error->all(FLERR,
+               "{} requires pair_style granular with a tangential <model>/acoustic "
+               "sub-model (e.g. pair_coeff * * hertz/material 1e8 0.5 0.3 tangential "
+               "mindlin/acoustic NULL 1.0 0.5)",
+               command);
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "{} requires atom attributes radius and rmass (use atom_style sphere)",
                command);
@@ -137,8 +162,10 @@ void GranularContactWalker::init(bool with_regions)
                   fmt::format("the contacts of atom types {} and {}", itype, jtype), true);
 
   if (!history)
-    error->all(FLERR, "{}: pair_style granular keeps no contact history; its tangential models "
-                      "must be /acoustic ones", command);
+    error->all(FLERR,
+               "{}: pair_style granular keeps no contact history; its tangential models "
+               "must be /acoustic ones",
+               command);
   locate_walls(with_regions);
 }
 
@@ -153,8 +180,9 @@ void GranularContactWalker::locate_walls(bool with_regions)
   for (auto *fix : modify->get_fix_list()) {
     if (utils::strmatch(fix->style, "^wall/gran/region$")) {
       if (!with_regions) {
-        error->warning(FLERR, "{}: the contacts with fix {} (wall/gran/region) are not in the "
-                              "vibration network (region_walls no): the wall is a free surface",
+        error->warning(FLERR,
+                       "{}: the contacts with fix {} (wall/gran/region) are not in the "
+                       "vibration network (region_walls no): the wall is a free surface",
                        command, fix->id);
         continue;
       }
@@ -167,19 +195,24 @@ void GranularContactWalker::locate_walls(bool with_regions)
     int dim = 0;
     const int *wallstyle = static_cast<int *>(fix->extract("wallstyle", dim));
     if (!wallstyle) {
-      error->warning(FLERR, "{}: fix {} cannot tell its contacts (a LAMMPS without the "
-                            "ACOUSTIC patch fix-wall-gran-extract.patch): the wall is a free "
-                            "surface of the vibration network", command, fix->id);
+      error->warning(FLERR,
+                     "{}: fix {} cannot tell its contacts (a LAMMPS without the "
+                     "ACOUSTIC patch fix-wall-gran-extract.patch): the wall is a free "
+                     "surface of the vibration network",
+                     command, fix->id);
       continue;
     }
     if (*wallstyle != XPLANE && *wallstyle != YPLANE && *wallstyle != ZPLANE) {
-      error->warning(FLERR, "{}: the contacts with fix {} (not a plane) are not in the vibration "
-                            "network: the wall is a free surface", command, fix->id);
+      error->warning(FLERR,
+                     "{}: the contacts with fix {} (not a plane) are not in the vibration "
+                     "network: the wall is a free surface",
+                     command, fix->id);
       continue;
     }
     if (*static_cast<int *>(fix->extract("wiggle", dim)))
-      error->all(FLERR, "{}: fix {} wall/gran wiggles; a moving wall cannot be part of the "
-                        "vibration network (remove wiggle, or make it a source with wall)",
+      error->all(FLERR,
+                 "{}: fix {} wall/gran wiggles; a moving wall cannot be part of the "
+                 "vibration network (remove wiggle, or make it a source with wall)",
                  command, fix->id);
     auto *model = dynamic_cast<FixWallGran *>(fix)->model;
     check_model(model, fmt::format("the contacts with fix {}", fix->id), false);
@@ -197,14 +230,16 @@ void GranularContactWalker::check_model(GranularModel *model, const std::string 
 {
   const std::string &tangential = model->tangential_model->name;
   if (needs_factor && !acoustic_tangential(model))
-    error->all(FLERR, "{}: {} use tangential model {}, which has no friction factor; use "
-                      "tangential {}/acoustic in pair_coeff", command, where, tangential, tangential);
+    error->all(FLERR,
+               "{}: {} use tangential model {}, which has no friction factor; use "
+               "tangential {}/acoustic in pair_coeff",
+               command, where, tangential, tangential);
   const std::string &normal = model->normal_model->name;
-  const bool closed_form = normal == "hooke" || normal == "hertz" || normal == "hertz/material" ||
-      normal == "dmt";
+  const bool closed_form = normal_law(model->normal_model) != NormalLaw::OTHER;
   if (!closed_form && model->normal_model->size_history > 0)
-    error->all(FLERR, "{}: {} use normal model {}, whose force depends on the loading history "
-                      "and cannot be linearised; use hooke, hertz, hertz/material, dmt or jkr",
+    error->all(FLERR,
+               "{}: {} use normal model {}, whose force depends on the loading history "
+               "and cannot be linearised; use hooke, hertz, hertz/material, dmt or jkr",
                command, where, normal);
 }
 
@@ -247,8 +282,10 @@ void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int 
   auto *current = dynamic_cast<PairGranular *>(force->pair_match("granular", 1));
   if (!pair || current != pair) init(region_walls);
   if (!neighbor_history_ready())
-    error->all(FLERR, "{}: pair granular has no neighbor list yet (a new pair style since the "
-                      "last run); use 'run 0' first", command);
+    error->all(FLERR,
+               "{}: pair granular has no neighbor list yet (a new pair style since the "
+               "last run); use 'run 0' first",
+               command);
   collect_pair(contacts, groupbit, errors);
   collect_walls(contacts, groupbit, errors);
 }
@@ -260,8 +297,8 @@ void GranularContactWalker::collect(std::vector<GranularContact> &contacts, int 
 
 bool GranularContactWalker::neighbor_history_ready() const
 {
-  int ready = (pair && history && pair->list &&
-               (pair->list->inum == 0 || history->firstflag)) ? 1 : 0;
+  int ready = (pair && history && pair->list && (pair->list->inum == 0 || history->firstflag)) ? 1
+                                                                                               : 0;
   int ready_everywhere = 0;
   MPI_Allreduce(&ready, &ready_everywhere, 1, MPI_INT, MPI_MIN, world);
   return ready_everywhere == 1;
@@ -309,7 +346,8 @@ void GranularContactWalker::collect_pair(std::vector<GranularContact> &contacts,
       if (!model->check_contact()) continue;
       if (model->rsq == 0.0) {
         errors.report(fmt::format("{}: atoms {} and {} are at the same position: their contact "
-                                  "has no normal", command, tag[i], tag[j]));
+                                  "has no normal",
+                                  command, tag[i], tag[j]));
         continue;
       }
       model->history = &firstvalue[i][size_history * jj];
@@ -326,8 +364,8 @@ void GranularContactWalker::collect_pair(std::vector<GranularContact> &contacts,
             std::isfinite(c.kt))) {
         errors.report(fmt::format("{}: contact of atoms {} and {} (overlap {}): its normal model "
                                   "{} gives F_n = {}, k_n = {}, k_t = {}; check its coefficients",
-                                  command, tag[i], tag[j], c.delta, model->normal_model->name,
-                                  c.fn, c.kn, c.kt));
+                                  command, tag[i], tag[j], c.delta, model->normal_model->name, c.fn,
+                                  c.kn, c.kt));
         continue;
       }
       contacts.push_back(c);
@@ -371,14 +409,15 @@ bool GranularContactWalker::reset_factors_between_runs(int groupbit)
       for (int i = 0; i < atom->nlocal; i++)
         if ((mask[i] & groupbit) && (mask[i] & fix->groupbit))
           for (int k = 0; k < region_wall->ncontact[i]; k++)
-            set_friction_factor(region_wall->history_many[i][k] +
-                                tangential->friction_factor_index(), 1.0);
+            set_friction_factor(
+                region_wall->history_many[i][k] + tangential->friction_factor_index(), 1.0);
       continue;
     }
     if (!utils::strmatch(fix->style, "^wall/gran$")) continue;
     int dim = 0;
     auto **history_one = static_cast<double **>(fix->extract("history", dim));
-    AcousticFrictionFactor *tangential = acoustic_tangential(dynamic_cast<FixWallGran *>(fix)->model);
+    AcousticFrictionFactor *tangential =
+        acoustic_tangential(dynamic_cast<FixWallGran *>(fix)->model);
     if (!history_one || !tangential) continue;
     for (int i = 0; i < atom->nlocal; i++)
       if ((mask[i] & groupbit) && (mask[i] & fix->groupbit))
@@ -408,9 +447,9 @@ void GranularContactWalker::add_wall_contact(GranularModel *model, int i, int wa
   if (!(std::isfinite(c.fn) && std::isfinite(c.fncrit) && std::isfinite(c.kn) &&
         std::isfinite(c.kt))) {
     errors.report(fmt::format("{}: contact of atom {} with fix {}: its normal model {} gives "
-                              "F_n = {}, k_n = {}, k_t = {}; check its coefficients", command,
-                              atom->tag[i], planes[wall].fix_id, model->normal_model->name, c.fn,
-                              c.kn, c.kt));
+                              "F_n = {}, k_n = {}, k_t = {}; check its coefficients",
+                              command, atom->tag[i], planes[wall].fix_id, model->normal_model->name,
+                              c.fn, c.kn, c.kt));
     return;
   }
   contacts.push_back(c);
@@ -436,8 +475,10 @@ void GranularContactWalker::collect_walls(std::vector<GranularContact> &contacts
     }
     auto *fix = dynamic_cast<FixWallGran *>(modify->get_fix_by_id(plane.fix_id));
     if (!fix) {
-      errors.report(fmt::format("{}: fix {} (wall/gran) was deleted since the last run; use 'run 0' "
-                                "first", command, plane.fix_id));
+      errors.report(
+          fmt::format("{}: fix {} (wall/gran) was deleted since the last run; use 'run 0' "
+                      "first",
+                      command, plane.fix_id));
       continue;
     }
     GranularModel *model = fix->model;
@@ -461,7 +502,8 @@ void GranularContactWalker::collect_walls(std::vector<GranularContact> &contacts
       if (!model->check_contact()) continue;
       if (model->rsq == 0.0) {
         errors.report(fmt::format("{}: the centre of atom {} lies on the plane of fix {}: the "
-                                  "contact has no normal", command, tag[i], plane.fix_id));
+                                  "contact has no normal",
+                                  command, tag[i], plane.fix_id));
         continue;
       }
       add_wall_contact(model, i, static_cast<int>(p), contacts, errors);
@@ -483,7 +525,8 @@ void GranularContactWalker::collect_region_wall(std::vector<GranularContact> &co
   auto *fix = dynamic_cast<FixWallGranRegion *>(modify->get_fix_by_id(fix_id));
   if (!fix) {
     errors.report(fmt::format("{}: fix {} (wall/gran/region) was deleted since the last run; use "
-                              "'run 0' first", command, fix_id));
+                              "'run 0' first",
+                              command, fix_id));
     return;
   }
   // the fix's region, unless it was deleted since the fix's last init()
@@ -491,7 +534,8 @@ void GranularContactWalker::collect_region_wall(std::vector<GranularContact> &co
   for (auto *region : domain->get_region_list()) region_exists |= (region == fix->region);
   if (!region_exists) {
     errors.report(fmt::format("{}: the region of fix {} (wall/gran/region) changed since the last "
-                              "run; use 'run 0' first", command, fix_id));
+                              "run; use 'run 0' first",
+                              command, fix_id));
     return;
   }
   Region *region = fix->region;
@@ -525,7 +569,8 @@ void GranularContactWalker::collect_region_wall(std::vector<GranularContact> &co
       if (!model->check_contact()) continue;
       if (model->rsq == 0.0) {
         errors.report(fmt::format("{}: the centre of atom {} lies on the surface of the region of "
-                                  "fix {}: the contact has no normal", command, tag[i], fix_id));
+                                  "fix {}: the contact has no normal",
+                                  command, tag[i], fix_id));
         continue;
       }
       add_wall_contact(model, i, wall, contacts, errors);
