@@ -9,8 +9,8 @@
 # SOUND_WIDTH (24), SOUND_DEPTH (0: 2D; > 0: 3D packings of monodisperse
 # spheres, that deep), SOUND_OUT (out), SOUND_PISTON_MASS (1: the piston's
 # mass in units of the grains'; other values go to ..._m<mass>/ directories),
-# SOUND_PISTON_SPEED (0: a free piston; > 0: the terminal speed of a dashpot
-# on the piston, in ..._v<speed>/ directories).
+# SOUND_PISTON_SPEED (0.001: the terminal speed of a dashpot on the piston;
+# other values, 0 for a free piston, go to ..._v<speed>/ directories).
 # The 3D samples of RESULTS.md:
 #   SOUND_PRESSURES=1e-4 SOUND_SEEDS="1 2" SOUND_WIDTH=8 SOUND_DEPTH=8 SOUND_OUT=out3d run_production.sh
 set -euo pipefail
@@ -26,10 +26,10 @@ width=${SOUND_WIDTH:-24}
 depth=${SOUND_DEPTH:-0}
 out=$here/${SOUND_OUT:-out}
 mass=${SOUND_PISTON_MASS:-1}
-speed=${SOUND_PISTON_SPEED:-0}
+speed=${SOUND_PISTON_SPEED:-0.001}
 suffix=""
 [ "$mass" = "1" ] || suffix="_m$mass"
-[ "$speed" = "0" ] || suffix="${suffix}_v$speed"
+[ "$speed" = "0.001" ] || suffix="${suffix}_v$speed"
 mkdir -p "$out"
 for p in $pressures; do for H in $heights; do for s in $seeds; do
   echo "$p $H $s"

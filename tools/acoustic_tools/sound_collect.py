@@ -40,7 +40,7 @@ PAPER_C22_PHI3STAR = {1e-7: (13.9e-4, 0.48), 1e-6: (3.2e-3, 0.49), 1e-5: (7.4e-3
 
 
 SAMPLE = re.compile(r"p([0-9.e+-]+)_H([0-9]+)_s([0-9]+)(_m([0-9.e+-]+))?(_v([0-9.e+-]+))?")
-DEFAULT_PISTON = ("1", "0")    # run_production.sh: SOUND_PISTON_MASS, SOUND_PISTON_SPEED
+DEFAULT_PISTON = ("1", "0.001")    # run_production.sh: SOUND_PISTON_MASS, SOUND_PISTON_SPEED
 
 
 def sample_piston(match):
