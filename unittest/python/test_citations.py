@@ -3,26 +3,13 @@ implement, in LAMMPS's citation file (-cite) and its screen summary."""
 import os
 import subprocess
 
+from hex_layer import hex_layer
+
 LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 
-DECK = """
-units lj
-dimension 2
-atom_style sphere
-boundary p fm p
-comm_modify vel yes
-lattice hex 1.1547005383792517
-region box block 0 6 0 4 -0.5 0.5
-create_box 2 box
-region base block INF INF -0.1 0.1 INF INF units box
-region layer block INF INF 0.5 3.3 INF INF units box
-create_atoms 2 region base
-create_atoms 1 region layer
-group base type 2
+DECK = hex_layer(6, 4, 3.3) + """
 region upper block INF INF 2.5 INF INF INF units box
 group top region upper
-set group all diameter 1.002
-set group all density 1.0
 pair_style granular
 pair_coeff * * hooke 1e4 0 tangential linear_history/acoustic 8e3 0 0.5
 fix plane all enforce2d

@@ -7,6 +7,8 @@ import pytest
 from lammps import (lammps, LMP_STYLE_ATOM, LMP_STYLE_GLOBAL, LMP_STYLE_LOCAL, LMP_TYPE_ARRAY,
                     LMP_TYPE_SCALAR, LMP_TYPE_VECTOR, LMP_SIZE_ROWS)
 
+from hex_layer import hex_layer
+
 
 @pytest.fixture
 def lmp():
@@ -26,24 +28,7 @@ def test_version_and_packages(lmp):
     assert not lmp.has_style("pair", "granular/acoustic")
 
 
-DECK = """
-units lj
-dimension 2
-atom_style sphere
-boundary p fm p
-comm_modify vel yes
-lattice hex 1.1547005383792517
-region box block 0 8 0 5 -0.5 0.5
-create_box 2 box
-region base block INF INF -0.1 0.1 INF INF units box
-region layer block INF INF 0.5 4.3 INF INF units box
-create_atoms 2 region base
-create_atoms 1 region layer
-group base type 2
-group grains type 1
-set group all diameter 1.002
-set group all density 1.0
-pair_style granular
+DECK = hex_layer(8, 5, 4.3) + """pair_style granular
 pair_coeff * * hooke 1e4 150 damping mass_velocity tangential linear_history/acoustic 8e3 1.0 0.5
 fix integrate grains nve/sphere
 fix plane all enforce2d
