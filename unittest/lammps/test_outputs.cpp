@@ -56,8 +56,18 @@ LAMMPS_NS::Compute *compute_of(LammpsInstance &L, const char *id)
   return L.lmp->modify->get_compute_by_id(id);
 }
 
+// Rank 0 writes the log and output files; every reader first waits for all
+// ranks, so that no rank reads a file before rank 0 has closed or flushed it
+// (a rank that failed an assertion on a half-written file would leave the
+// other rank alone in the next collective call).
+void wait_for_the_writer()
+{
+  MPI_Barrier(MPI_COMM_WORLD);
+}
+
 std::vector<std::vector<double>> numeric_rows(const std::string &file, std::size_t columns)
 {
+  wait_for_the_writer();
   std::vector<std::vector<double>> rows;
   std::ifstream in(file);
   std::string line;
@@ -75,6 +85,7 @@ std::vector<std::vector<double>> numeric_rows(const std::string &file, std::size
 // "ITEM: ENTRIES" header
 std::vector<std::vector<double>> last_dump_rows(const std::string &file)
 {
+  wait_for_the_writer();
   std::ifstream in(file);
   std::string line;
   std::vector<std::vector<double>> rows;
@@ -114,7 +125,7 @@ std::map<long, double> by_id(LammpsInstance &L, double **array, int k)
 
 void remove_file(const std::string &name)
 {
-  MPI_Barrier(MPI_COMM_WORLD);
+  wait_for_the_writer();
   if (AcousticTest::mpi_rank() == 0) std::remove(name.c_str());
 }
 
@@ -180,7 +191,6 @@ TEST(Outputs, FixAveTimeScalarAndVectorModes)
   // rows "index frequency" after the header of step 10
   modes->compute_vector();
   ASSERT_GT(modes->size_vector, 50);
-  MPI_Barrier(MPI_COMM_WORLD);
   // two blocks (steps 2000 and 2010) of a line "step N" and N rows: the last one
   const int n = modes->size_vector;
   auto spectrum = numeric_rows("outputs_spectrum.dat", 2);
@@ -259,7 +269,6 @@ TEST(Outputs, DumpCustom)
   modes->compute_peratom();
   const auto amp_x = by_id(L, fix->array_atom, 0), amp_y = by_id(L, fix->array_atom, 1);
   const auto shape_x = by_id(L, modes->array_atom, 0), shape_y = by_id(L, modes->array_atom, 1);
-  MPI_Barrier(MPI_COMM_WORLD);
   const auto rows = last_dump_rows("outputs.dump");
   ASSERT_EQ(rows.size(), static_cast<std::size_t>(L.natoms()));
   for (const auto &row : rows) {
@@ -288,7 +297,6 @@ TEST(Outputs, DumpLocal)
   const std::vector<double> factors = AcousticTest::allgather(L, mine);
   modes->compute_vector();
   const std::vector<double> frequencies(modes->vector, modes->vector + modes->size_vector);
-  MPI_Barrier(MPI_COMM_WORLD);
   const auto contact_rows = last_dump_rows("outputs_contacts.local");
   ASSERT_EQ(contact_rows.size(), factors.size());
   ASSERT_EQ(static_cast<double>(contact_rows.size()), fix->compute_vector(0));
