@@ -1,0 +1,98 @@
+"""The files of one job of a study, and the command line of a study.
+
+A study (examples/avalanche, examples/sound, examples/cavity) runs many jobs,
+each a LAMMPS run in a directory of its own:
+
+  job.json     the job's settings (the -var values of the deck, and anything
+               else the run command chose), written by the study's `run`
+               command before LAMMPS starts; collect reads the settings from
+               here, never from the directory's name
+  result.json  what the deck measured, one JSON object written by the deck
+               itself with LAMMPS's `print """{...}""" file ${dir}/result.json`
+               at its end; a job without it has not finished
+
+Each study has one entry point, `examples/<study>/study`, with the
+subcommands `run`, `collect` and `figures` (see `main`).
+"""
+import argparse
+import json
+import math
+import os
+
+JOB = "job.json"
+RESULT = "result.json"
+
+
+def write_job(directory, settings):
+    """Write the settings of a job (a dict of JSON values) to directory/job.json."""
+    os.makedirs(directory, exist_ok=True)
+    with open(os.path.join(directory, JOB), "w") as handle:
+        json.dump(settings, handle, indent=1, sort_keys=True)
+        handle.write("\n")
+
+
+def read_job(directory):
+    """The settings of the job in directory (a dict); KeyError-free: {} when absent."""
+    path = os.path.join(directory, JOB)
+    if not os.path.exists(path):
+        return {}
+    with open(path) as handle:
+        return json.load(handle)
+
+
+def _finite_or_none(value):
+    return None if isinstance(value, float) and not math.isfinite(value) else value
+
+
+def read_result(directory):
+    """What the deck of the job in directory measured (a dict), or None when the
+    job has not written its result.json (not run, still running, or failed).
+    The non-finite numbers LAMMPS prints (nan, inf) become None."""
+    path = os.path.join(directory, RESULT)
+    if not os.path.exists(path):
+        return None
+    with open(path) as handle:
+        text = handle.read()
+    for word, token in (("-nan", "NaN"), ("nan", "NaN"), ("-inf", "-Infinity"), ("inf", "Infinity")):
+        text = text.replace(f": {word}", f": {token}")
+    result = json.loads(text)
+    return {key: _finite_or_none(value) for key, value in result.items()}
+
+
+def finished_jobs(out):
+    """(directory, settings, result) of every finished job under out, in the
+    order of the directories' names (one level: out/<job>/)."""
+    if not os.path.isdir(out):
+        return []
+    found = []
+    for name in sorted(os.listdir(out)):
+        directory = os.path.join(out, name)
+        if not os.path.isdir(directory):
+            continue
+        result = read_result(directory)
+        if result is not None:
+            found.append((directory, read_job(directory), result))
+    return found
+
+
+def lammps_variables(settings, names):
+    """The -var arguments of LAMMPS's command line for the given settings."""
+    arguments = []
+    for name in names:
+        arguments += ["-var", name, str(settings[name])]
+    return arguments
+
+
+def main(description, commands, argv=None):
+    """The command line of a study: commands maps each subcommand's name
+    ("run", "collect", "figures", ...) to (function, help, add_arguments),
+    where add_arguments(parser) declares its options and function(args) does
+    the work."""
+    parser = argparse.ArgumentParser(description=description)
+    subparsers = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for name, (function, help_text, add_arguments) in commands.items():
+        sub = subparsers.add_parser(name, help=help_text, description=help_text)
+        add_arguments(sub)
+        sub.set_defaults(function=function)
+    args = parser.parse_args(argv)
+    return args.function(args)
