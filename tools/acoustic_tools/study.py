@@ -8,7 +8,7 @@ each a LAMMPS run in a directory of its own:
                command before LAMMPS starts; collect reads the settings from
                here, never from the directory's name
   result.json  what the deck measured, one JSON object written by the deck
-               itself with LAMMPS's `print """{...}""" file ${dir}/result.json`
+               itself with LAMMPS's `print \"\"\"{...}\"\"\" file ${dir}/result.json`
                at its end; a job without it has not finished
 
 Each study has one entry point, `examples/<study>/study`, with the
