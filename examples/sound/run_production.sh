@@ -3,7 +3,10 @@
 # 25 d, width 24 d, several seeds; each sample is one LAMMPS run of in.sound
 # (packing, static network, pulse, moduli) into out/p<p>_H<H>_s<seed>/,
 # skipped when it is already there.  Runs SOUND_JOBS samples at a time
-# (default 2, one core each).  Then: /usr/bin/python3 collect.py
+# (default 2, one core each).  Each sample's settings go to its job.json,
+# the deck writes result.json, this script adds wall_seconds to it.
+# Superseded by study.py run (the same samples, the same directories);
+# then: examples/sound/study.py collect
 # Usage: examples/sound/run_production.sh [BUILD_DIR]
 # Environment: SOUND_SEEDS (default "1 2 3 4"), SOUND_PRESSURES, SOUND_HEIGHTS,
 # SOUND_WIDTH (24), SOUND_DEPTH (0: 2D; > 0: 3D packings of monodisperse
@@ -35,11 +38,18 @@ for p in $pressures; do for H in $heights; do for s in $seeds; do
   echo "$p $H $s"
 done; done; done | xargs -P "$jobs" -L 1 bash -c '
   p=$0; H=$1; s=$2; dir='"$out"'/p${p}_H${H}_s${s}'"$suffix"'
-  [ -f "$dir/moduli.txt" ] && exit 0
+  { [ -f "$dir/result.json" ] || [ -f "$dir/moduli.txt" ]; } && exit 0
   mkdir -p "$dir"
+  /usr/bin/python3 -c "import sys; from acoustic_tools import sound_study; sound_study.write_sample_job(*sys.argv[1:])" \
+    "$dir" $p $H $s '"$width"' '"$depth"' '"$mass"' '"$speed"'
   start=$(date +%s)
   '"$lmp"' -in '"$here"'/in.sound -var here '"$here"' -var p $p -var W '"$width"' -var D '"$depth"' -var H $H -var seed $s -var piston_mass '"$mass"' -var piston_speed '"$speed"' \
     -var dir "$dir" -log "$dir/log.lammps" -screen none -nocite \
     || { echo "p=$p H=$H seed=$s: FAILED, see $dir/log.lammps"; exit 0; }
-  echo "wall_seconds $(( $(date +%s) - start ))" >> "$dir/summary.txt"
+  if [ -f "$dir/result.json" ]; then
+    /usr/bin/python3 -c "import sys; from acoustic_tools import sound_study; sound_study.add_wall_seconds(*sys.argv[1:])" \
+      "$dir" $(( $(date +%s) - start ))
+  else
+    echo "wall_seconds $(( $(date +%s) - start ))" >> "$dir/summary.txt"
+  fi
   echo "p=$p H=$H seed=$s: $(grep "^moduli" "$dir/log.lammps") ($(( $(date +%s) - start )) s)"'

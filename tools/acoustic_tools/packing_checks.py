@@ -9,9 +9,11 @@ DIR holds grains.dump (id x y z radius mass) and contacts.dump (fix
 acoustic/mindlin's local array: i, j (0 for a wall), f_n, k_n); P the target
 pressure, W the width, H the height of the piston, D the depth (0: 2D),
 SIGMA_RATIO the bulk sigma11/sigma22 of LAMMPS's contact virial.  Writes
-DIR/checks.txt (one "key value" per line) and DIR/checks.lmp, print commands
-that the deck includes so that the checks reach its log.
+DIR/checks.lmp, which the deck includes: print commands that put the checks
+into its log, and the string variable `checks`, the checks as one JSON
+object, which in.sound writes into the sample's result.json.
 """
+import json
 import os
 import sys
 
@@ -43,17 +45,26 @@ def print_lines(checks, pressure):
     return lines
 
 
+def json_object(checks):
+    """The checks as the text of one JSON object, each value to 10 digits
+    (a non-finite value as LAMMPS prints one: nan, inf; study.read_result
+    reads them)"""
+    return "{" + ", ".join(f"{json.dumps(key)}: {value:.10g}" for key, value in checks.items()) + "}"
+
+
+def variable_line(checks):
+    """The LAMMPS command that defines the string variable checks"""
+    return f"variable checks string '{json_object(checks)}'"
+
+
 def main(argv):
     if len(argv) != 7:
         sys.exit(__doc__)
     directory = argv[1]
     pressure, width, height, depth, sigma_ratio = (float(a) for a in argv[2:])
     checks = packing_checks(directory, pressure, width, height, depth, sigma_ratio)
-    with open(os.path.join(directory, "checks.txt"), "w") as out:
-        for key, value in checks.items():
-            out.write(f"{key} {value:.10g}\n")
     with open(os.path.join(directory, "checks.lmp"), "w") as out:
-        out.write("\n".join(print_lines(checks, pressure)) + "\n")
+        out.write("\n".join(print_lines(checks, pressure) + [variable_line(checks)]) + "\n")
 
 
 if __name__ == "__main__":

@@ -1,9 +1,15 @@
-"""Collect the samples of examples/sound (run_production.sh: out/p<p>_H<H>_s<seed>[_m<mass>][_v<speed>]/,
-in.chain: out/chain/) into paper 003's tables and figures;
-examples/sound/collect.py is the command line.
+"""Collect the jobs of examples/sound (acoustic_tools.sound_study, the
+command line examples/sound/study.py) into paper 003's tables and figures.
+Each job is a directory of OUT with its job.json (the settings: kind
+"sample" or "chain", p, H, seed, W, D, piston_mass, piston_speed; N for the
+chain) and, once finished, the result.json that in.sound (in.chain) writes
+at its end; the settings come from job.json, the deck's values from
+result.json, the signals and the contact network from the data files beside
+them (pulse_A.dat, pulse_B.dat, modes.dat, grains.dump, contacts.dump;
+chain_A_<N>.dat, chain_B_<N>.dat).
 
   samples, pistons, sample_results, usable_samples
-                        the sample directories and what each holds
+                        the sample jobs and what each holds
   pressure_entry        the statistics of the samples at one pressure
   pressures_of, speed_pressures, overshoots
                         the pressures of the samples and those with a
@@ -14,17 +20,15 @@ examples/sound/collect.py is the command line.
   collect_results       all of it: the dict of results.json
   tables                the markdown tables of tables.md
   figures               the figures (sound_figures)
-  collect               what collect.py does
+  collect, draw          what study.py collect and study.py figures do
 """
 import json
 import math
 import os
-import re
 
 import numpy as np
 
-from . import lammps_output, network_moduli, sound, sound_figures
-from .lammps_output import read_key_values
+from . import lammps_output, network_moduli, sound, sound_figures, study
 from .stats import mean_sd
 
 
@@ -39,35 +43,47 @@ PAPER_TABLE_II = {
 PAPER_C22_PHI3STAR = {1e-7: (13.9e-4, 0.48), 1e-6: (3.2e-3, 0.49), 1e-5: (7.4e-3, 0.50), 1e-4: (1.88e-2, 0.52)}
 
 
-SAMPLE = re.compile(r"p([0-9.e+-]+)_H([0-9]+)_s([0-9]+)(_m([0-9.e+-]+))?(_v([0-9.e+-]+))?")
-DEFAULT_PISTON = ("1", "0.001")    # run_production.sh: SOUND_PISTON_MASS, SOUND_PISTON_SPEED
+DEFAULT_PISTON = (1, 0.001)    # in.packing's piston_mass and piston_speed
+
+# the values of a sample's result.json, in the order of results.json: what
+# in.measure measured (with the deck's settings W, D, p_target, seed and
+# piston_mass), what in.moduli measured, and the seconds the job took
+SUMMARY_KEYS = ("W", "D", "h", "p", "p_target", "p_peak", "N", "seed", "max_acceleration", "piston_mass",
+                "packing_steps", "wall_seconds")
+MODULI_KEYS = ("sigma1_over_sigma2", "C11", "C22", "C12", "C12_from_eps11", "C33", "strain", "C11_half",
+               "C22_half", "C12_half", "C33_half")
 
 
-def sample_piston(match):
-    """(mass, speed) of a sample directory's name, as run_production.sh writes them"""
-    return (match.group(5) or DEFAULT_PISTON[0], match.group(7) or DEFAULT_PISTON[1])
+def piston_of(settings):
+    """(mass, speed) of a sample's job.json"""
+    return (settings["piston_mass"], settings["piston_speed"])
+
+
+def sample_key(settings):
+    """(p, H, seed) of a sample's job.json"""
+    return (float(settings["p"]), int(settings["H"]), int(settings["seed"]))
 
 
 def samples(out, piston=DEFAULT_PISTON):
-    """(p, H, seed) -> directory of every finished sample made with the
-    given piston (mass, speed): the default one (directories without a
-    suffix) unless told"""
+    """(p, H, seed) -> (directory, result) of every finished sample made
+    with the given piston (mass, speed): the default one unless told; in
+    the order of the directories' names"""
     found = {}
-    for name in sorted(os.listdir(out)):
-        match = SAMPLE.fullmatch(name)
-        path = os.path.join(out, name)
-        if not (match and os.path.exists(os.path.join(path, "moduli.txt"))):
+    for directory, settings, result in study.finished_jobs(out):
+        if settings.get("kind") != "sample" or piston_of(settings) != tuple(piston):
             continue
-        if sample_piston(match) != tuple(piston):
-            continue
-        found[(float(match.group(1)), int(match.group(2)), int(match.group(3)))] = path
+        found[sample_key(settings)] = (directory, result)
     return found
 
 
 def pistons(out):
-    """the (mass, speed) of the pistons of the sample directories"""
-    return sorted({sample_piston(match) for match in map(SAMPLE.fullmatch, os.listdir(out)) if match},
-                  key=lambda piston: (float(piston[0]), float(piston[1])))
+    """the (mass, speed) of the pistons of the sample jobs (finished or not)"""
+    found = set()
+    for name in os.listdir(out):
+        settings = study.read_job(os.path.join(out, name))
+        if settings.get("kind") == "sample":
+            found.add(piston_of(settings))
+    return sorted(found)
 
 
 def mean_standard_error(values):
@@ -100,51 +116,54 @@ def checks_table(per_sample, pressures, height=25):
     return rows
 
 
-def sample_results(path):
-    """Everything about one sample directory: summary.txt and moduli.txt,
-    the coherent peak of both pulses, the statics of Table I, whether the
-    packing came to rest, its checks.txt stress ratio, the overshoot of its
-    compression and (2D) the moduli of its contact network"""
-    summary = read_key_values(os.path.join(path, "summary.txt"))
-    result = dict(summary)
-    result.update(read_key_values(os.path.join(path, "moduli.txt")))
+def _number(value):
+    """a value of result.json as the float the analysis uses (None, a
+    non-finite number of the deck, becomes nan)"""
+    return math.nan if value is None else float(value)
+
+
+def sample_results(path, result):
+    """Everything about one sample: its result.json (result) as in.sound
+    wrote it (SUMMARY_KEYS, MODULI_KEYS), the coherent peak of both pulses,
+    the statics of Table I, whether the packing came to rest, the stress
+    ratio of its acceptance checks, the overshoot of its compression and (2D)
+    the moduli of its contact network (path: the job's directory)"""
+    summary = {key: _number(result[key]) for key in SUMMARY_KEYS if key in result}
+    out = dict(summary)
+    out.update({key: _number(result[key]) for key in MODULI_KEYS if key in result})
     for condition in ("A", "B"):
         t, f = sound.read_pulse(os.path.join(path, f"pulse_{condition}.dat"))
         peak = sound.coherent_peak(t, f)
-        result.update({f"{key}_{condition}": value for key, value in peak.items()})
+        out.update({f"{key}_{condition}": value for key, value in peak.items()})
     grains = lammps_output.read_dump(os.path.join(path, "grains.dump"))[-1]
     contacts = lammps_output.read_dump(os.path.join(path, "contacts.dump"))[-1]
-    result.update(sound.static_properties(grains, contacts, summary["W"], summary["h"], summary["p"],
-                                          depth=summary.get("D") or None))
-    # the packing came to rest (every acceleration below the criterion) within
-    # the deck's max_checks (in.packing prints "packing: at rest" or "NOT at rest")
-    with open(os.path.join(path, "log.lammps")) as handle:
-        result["at_rest"] = any(line.startswith("packing: at rest") for line in handle)
-    checks_path = os.path.join(path, "checks.txt")
-    if os.path.exists(checks_path):
+    out.update(sound.static_properties(grains, contacts, summary["W"], summary["h"], summary["p"],
+                                       depth=summary.get("D") or None))
+    # the packing came to rest (every acceleration below the criterion)
+    # within the deck's max_checks
+    out["at_rest"] = bool(result["at_rest"])
+    if "checks" in result:
         # the packing's own checks (bulk sigma1/sigma2 of the contact virial at rest)
-        result["sigma_ratio"] = read_key_values(checks_path)["sigma_ratio"]
+        out["sigma_ratio"] = _number(result["checks"]["sigma_ratio"])
     if "p_peak" in summary:
-        result["overshoot"] = summary["p_peak"] / summary["p"]
+        out["overshoot"] = summary["p_peak"] / summary["p"]
     if not summary.get("D"):
         # the same moduli from the linear response of the contact network (2D)
         network = network_moduli.network_moduli(grains, contacts, summary["W"], summary["h"])
-        result.update({f"{key}_network": value for key, value in network.items()})
-    return result
+        out.update({f"{key}_network": value for key, value in network.items()})
+    return out
 
 
-def chain_results(directory):
-    """amplitude and width of the coherent peak against N for conditions A, B"""
+def chain_results(directory, sizes):
+    """amplitude and width of the coherent peak against N for conditions A,
+    B, from the signals chain_A_<N>.dat, chain_B_<N>.dat of the chain job in
+    directory (sizes: the N of its result.json)"""
     out = {}
     for condition in ("A", "B"):
-        sizes, amplitude, width = [], [], []
-        for name in os.listdir(directory):
-            match = re.fullmatch(rf"chain_{condition}_([0-9]+)\.dat", name)
-            if not match:
-                continue
-            t, f = sound.read_pulse(os.path.join(directory, name))
+        amplitude, width = [], []
+        for n in sizes:
+            t, f = sound.read_pulse(os.path.join(directory, f"chain_{condition}_{n}.dat"))
             peak = sound.coherent_peak(t, f)
-            sizes.append(int(match.group(1)))
             amplitude.append(peak["amplitude"])
             width.append(peak["t_peak"] - peak["t10"])
         order = np.argsort(sizes)
@@ -152,6 +171,14 @@ def chain_results(directory):
                           "amplitude": list(np.array(amplitude)[order].tolist()),
                           "rise": list(np.array(width)[order].tolist())}
     return out
+
+
+def chain_job(out):
+    """(directory, result) of the finished chain job of out, or None"""
+    for directory, settings, result in study.finished_jobs(out):
+        if settings.get("kind") == "chain":
+            return directory, result
+    return None
 
 
 def height_series(per_sample, pressure):
@@ -178,8 +205,9 @@ def usable_samples(out):
     sample_results of those that belong to a pressure series, and the names
     of those left out: the packings whose servo did not bring the wall
     pressure within 5 % of the target, and those not at rest"""
-    found = samples(out)
-    per_sample = {key: sample_results(path) for key, path in found.items()}
+    jobs = samples(out)
+    found = {key: directory for key, (directory, _) in jobs.items()}
+    per_sample = {key: sample_results(directory, result) for key, (directory, result) in jobs.items()}
     off_target = sorted(os.path.basename(found[key]) for key, r in per_sample.items()
                         if abs(r["p"] / key[0] - 1.0) > 0.05)
     not_at_rest = sorted(os.path.basename(found[key]) for key, r in per_sample.items() if not r["at_rest"])
@@ -240,7 +268,7 @@ def pressure_entry(per_sample, p):
         if shear:
             entry["C33_dem_over_network"] = mean_sd([r["C33"] / r["C33_network"] for r in shear])[:2]
     c_l, c_t = sound.sound_speeds(entry.get("C22", (math.nan,))[0], entry.get("C33", (math.nan,))[0],
-                                  entry["phi3_star"][0])
+                                  entry.get("phi3_star", (math.nan,))[0])
     if "C22" in entry:
         entry["c_l"] = c_l
         if "c_tof_t10" in entry:
@@ -257,17 +285,17 @@ def piston_checks(out):
     checks = {}
     every_piston = pistons(out)
     for piston in every_piston if len(every_piston) > 1 else []:
-        every = [sample_results(path) for key, path in samples(out, piston).items()
+        every = [sample_results(path, result) for key, (path, result) in samples(out, piston).items()
                  if key[0] == 1e-4 and key[1] == 25]
         at = [r for r in every if r["at_rest"]]
         entry = {"samples": f"{len(at)} of {len(every)} at rest"}
         if not at:
-            checks[f"mass {piston[0]}, dashpot speed {piston[1]}"] = entry
+            checks[f"mass {piston[0]:g}, dashpot speed {piston[1]:g}"] = entry
             continue
         for key in sound.CHECKS + ("overshoot", "packing_steps"):
             if all(key in r for r in at):
                 entry[key] = mean_standard_error([r[key] for r in at])
-        checks[f"mass {piston[0]}, dashpot speed {piston[1]}"] = entry
+        checks[f"mass {piston[0]:g}, dashpot speed {piston[1]:g}"] = entry
     return checks
 
 
@@ -291,7 +319,7 @@ def collect_results(out, per_sample, off_target, not_at_rest):
     entry of each pressure (pressure_entry), the exponents of the speeds
     against the pressure, the 1D chain of out/chain, the correlation of the
     stress ratio with the overshoot, the heights at p = 1e-4, the checks
-    beside Table I and those of the pistons"""
+    beside Table I and those of the pistons (out: the jobs' directory)"""
     pressures = pressures_of(per_sample)
     results = {"samples": {f"p{p:g}_H{H}_s{s}": r for (p, H, s), r in per_sample.items()},
                "off_target": off_target, "not_at_rest": not_at_rest, "pressures": {}}
@@ -311,9 +339,9 @@ def collect_results(out, per_sample, off_target, not_at_rest):
             results[f"{key}_exponent"] = x
             results[f"{key}_exponent_pressures"] = with_speed_key
 
-    chain_dir = os.path.join(out, "chain")
-    if os.path.isdir(chain_dir):
-        chain = chain_results(chain_dir)
+    chain_found = chain_job(out)
+    if chain_found:
+        chain = chain_results(chain_found[0], chain_found[1]["N"])
         results["chain"] = chain
         for condition in ("A", "B"):
             c = chain[condition]
@@ -503,10 +531,9 @@ def figures(results, per_sample, found, figdir):
         sound_figures.fig7_exponents(curves, os.path.join(figdir, "fig7_exponents.png"))
 
 
-def collect(out, figdir):
-    """What collect.py does: results.json and tables.md into out, the
-    tables on stdout, the figures into figdir"""
-    os.makedirs(figdir, exist_ok=True)
+def collect(out):
+    """What study.py collect does: results.json and tables.md into out, the
+    tables on stdout"""
     found, per_sample, off_target, not_at_rest = usable_samples(out)
     results = collect_results(out, per_sample, off_target, not_at_rest)
     with open(os.path.join(out, "results.json"), "w") as handle:
@@ -515,4 +542,12 @@ def collect(out, figdir):
     with open(os.path.join(out, "tables.md"), "w") as handle:
         handle.write(text + "\n")
     print(text)
+
+
+def draw(out, figdir):
+    """What study.py figures does: the figures of the jobs of out into
+    figdir (from the jobs themselves: collect need not have run)"""
+    os.makedirs(figdir, exist_ok=True)
+    found, per_sample, off_target, not_at_rest = usable_samples(out)
+    results = collect_results(out, per_sample, off_target, not_at_rest)
     figures(results, per_sample, found, figdir)

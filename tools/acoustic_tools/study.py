@@ -44,6 +44,16 @@ def _finite_or_none(value):
     return None if isinstance(value, float) and not math.isfinite(value) else value
 
 
+def _load_result(path):
+    """result.json as written, the non-finite numbers LAMMPS prints (nan,
+    inf) read as floats"""
+    with open(path) as handle:
+        text = handle.read()
+    for word, token in (("-nan", "NaN"), ("nan", "NaN"), ("-inf", "-Infinity"), ("inf", "Infinity")):
+        text = text.replace(f": {word}", f": {token}")
+    return json.loads(text)
+
+
 def read_result(directory):
     """What the deck of the job in directory measured (a dict), or None when the
     job has not written its result.json (not run, still running, or failed).
@@ -51,12 +61,25 @@ def read_result(directory):
     path = os.path.join(directory, RESULT)
     if not os.path.exists(path):
         return None
-    with open(path) as handle:
-        text = handle.read()
-    for word, token in (("-nan", "NaN"), ("nan", "NaN"), ("-inf", "-Infinity"), ("inf", "Infinity")):
-        text = text.replace(f": {word}", f": {token}")
-    result = json.loads(text)
+    result = _load_result(path)
     return {key: _finite_or_none(value) for key, value in result.items()}
+
+
+def write_result(directory, result):
+    """Write result.json from Python (a conversion of older outputs; the decks
+    write their own); non-finite numbers as JSON's NaN, Infinity"""
+    with open(os.path.join(directory, RESULT), "w") as handle:
+        json.dump(result, handle, indent=1)
+        handle.write("\n")
+
+
+def add_to_result(directory, values):
+    """Add values (a dict) to the result.json of the job in directory, after
+    the deck's own: what the run command measured around the deck, e.g. the
+    job's wall time"""
+    result = _load_result(os.path.join(directory, RESULT))
+    result.update(values)
+    write_result(directory, result)
 
 
 def finished_jobs(out):

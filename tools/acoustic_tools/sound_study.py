@@ -1,0 +1,307 @@
+"""The command line of examples/sound (paper 003): examples/sound/study.py.
+
+  run       the samples (in.sound: packing, pulse, moduli), one job per
+            directory OUT/p<p>_H<H>_s<seed>[_m<mass>][_v<speed>]/, N at a
+            time, each skipped when its result.json is there (a job stopped
+            half-way runs again); with --chain, the 1D chain (in.chain) into
+            OUT/chain/.  Each job's settings go to its job.json before
+            LAMMPS starts; the deck writes result.json at its end, to which
+            run adds the job's wall_seconds.
+  collect   OUT/results.json and OUT/tables.md (acoustic_tools.sound_collect)
+  figures   the PNG figures (acoustic_tools.sound_figures)
+  migrate   one-off: job.json and result.json for the sample directories
+            written before the decks wrote result.json (summary.txt,
+            moduli.txt, checks.txt and the log; examples/sound/record/ too)
+
+The directory's name is only a name: collect reads the settings from
+job.json.  Directory names keep the texts of the pressure and the piston
+given on the command line (p1e-4, _m0.1, _v0), as run_production.sh named
+them.
+"""
+import concurrent.futures
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+from . import sound_collect, study
+from .lammps_output import read_key_values
+
+PRESSURES = ("1e-4", "1e-5", "1e-6", "1e-7")
+HEIGHTS = (25, 8)
+SEEDS = (1, 2, 3, 4)
+CHAIN_SIZES = (8, 16, 32, 64, 128, 256, 512, 1024, 2048)
+DEFAULT_MASS, DEFAULT_SPEED = "1", "0.001"
+# the variables of in.sound that a sample's job.json sets
+SAMPLE_VARIABLES = ("p", "W", "D", "H", "seed", "piston_mass", "piston_speed")
+
+
+def _number(text):
+    """a number given as text (the command line, a directory's name): an int
+    when it is one, else a float"""
+    value = float(text)
+    return int(value) if value.is_integer() and re.fullmatch(r"[+-]?[0-9]+", str(text).strip()) else value
+
+
+def sample_name(p, H, seed, piston_mass=DEFAULT_MASS, piston_speed=DEFAULT_SPEED):
+    """The directory name of a sample (texts as given on the command line):
+    p<p>_H<H>_s<seed>, with _m<mass> and _v<speed> for another piston than
+    the default"""
+    name = f"p{p}_H{H}_s{seed}"
+    if str(piston_mass) != DEFAULT_MASS:
+        name += f"_m{piston_mass}"
+    if str(piston_speed) != DEFAULT_SPEED:
+        name += f"_v{piston_speed}"
+    return name
+
+
+def sample_settings(p, H, seed, width=24, depth=0, piston_mass=DEFAULT_MASS, piston_speed=DEFAULT_SPEED,
+                    extra=()):
+    """The job.json of a sample: kind "sample", the pressure (p), the target
+    height (H), the seed, the width (W), the depth (D, 0: 2D), the piston's
+    mass (in units of the grains') and dashpot speed, and any other variable
+    of in.sound given as (name, text) pairs in extra ("variables")"""
+    settings = {"kind": "sample", "deck": "in.sound", "p": float(p), "H": int(H), "seed": int(seed),
+                "W": _number(width), "D": _number(depth), "piston_mass": _number(piston_mass),
+                "piston_speed": _number(piston_speed)}
+    if extra:
+        settings["variables"] = {name: value for name, value in extra}
+    return settings
+
+
+def write_sample_job(directory, p, H, seed, width, depth, piston_mass, piston_speed):
+    """job.json of a sample run by examples/sound/run_production.sh (texts of
+    its command line)"""
+    study.write_job(directory, sample_settings(p, H, seed, width, depth, piston_mass, piston_speed))
+
+
+def add_wall_seconds(directory, seconds):
+    """Add the job's wall time (s) to its result.json"""
+    study.add_to_result(directory, {"wall_seconds": int(seconds)})
+
+
+def _deck_text(settings, name, texts):
+    """the -var text of one of a sample's settings: the command line's text
+    when there is one (the log then reads as run_production.sh's), else
+    the number"""
+    return texts.get(name, f"{settings[name]:g}" if isinstance(settings[name], float) else str(settings[name]))
+
+
+def sample_command(lmp, here, directory, settings, texts):
+    """The LAMMPS command of one sample"""
+    command = [lmp, "-in", os.path.join(here, "in.sound"), "-var", "here", here]
+    for name in SAMPLE_VARIABLES:
+        command += ["-var", name, _deck_text(settings, name, texts)]
+    for name, value in settings.get("variables", {}).items():
+        command += ["-var", name] + str(value).split()
+    return command + ["-var", "dir", directory, "-log", os.path.join(directory, "log.lammps"),
+                      "-screen", "none", "-nocite"]
+
+
+def chain_command(lmp, here, directory, settings):
+    """The LAMMPS command of the chain job"""
+    return [lmp, "-in", os.path.join(here, "in.chain"), "-var", "p", f"{settings['p']:g}",
+            "-var", "N"] + [str(n) for n in settings["N"]] + [
+        "-var", "dir", directory, "-log", os.path.join(directory, "log.lammps"), "-screen", "none", "-nocite"]
+
+
+def _run_job(label, directory, settings, command):
+    """Write job.json, run LAMMPS, add wall_seconds to result.json; the
+    line to print"""
+    study.write_job(directory, settings)
+    start = time.time()
+    done = subprocess.run(command, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                          text=True)
+    seconds = time.time() - start
+    if done.returncode != 0 or study.read_result(directory) is None:
+        return f"{label}: FAILED, see {os.path.join(directory, 'log.lammps')}"
+    add_wall_seconds(directory, seconds)
+    summary = ""
+    with open(os.path.join(directory, "log.lammps")) as handle:
+        for line in handle:
+            if line.startswith("moduli: sigma1/sigma2"):
+                summary = line.strip() + " "
+    return f"{label}: {summary}({seconds:.0f} s)"
+
+
+def default_lmp(here):
+    """LAMMPS of this repository's build (./run.sh build)"""
+    return os.path.join(here, "..", "..", "build", "lammps", "lmp")
+
+
+def run(args):
+    """study.py run: the samples (and the chain) not yet finished, args.jobs at a time"""
+    here = os.path.abspath(args.here)
+    lmp = shutil.which(args.lmp) or args.lmp
+    if not os.access(lmp, os.X_OK):
+        sys.exit(f"no LAMMPS at {lmp} (./run.sh build first, or --lmp)")
+    lmp = os.path.abspath(lmp)
+    out = os.path.abspath(args.out)
+    os.makedirs(out, exist_ok=True)
+    jobs = []
+    for p in args.pressures:
+        for H in args.heights:
+            for seed in args.seeds:
+                directory = os.path.join(out, sample_name(p, H, seed, args.piston_mass, args.piston_speed))
+                if study.read_result(directory) is not None:
+                    continue
+                settings = sample_settings(p, H, seed, args.width, args.depth, args.piston_mass,
+                                           args.piston_speed, args.var or ())
+                texts = {"p": p, "W": args.width, "D": args.depth, "piston_mass": args.piston_mass,
+                         "piston_speed": args.piston_speed}
+                jobs.append((f"p={p} H={H} seed={seed}", directory, settings,
+                             sample_command(lmp, here, directory, settings, texts)))
+    if args.chain:
+        directory = os.path.join(out, "chain")
+        if study.read_result(directory) is None:
+            settings = {"kind": "chain", "deck": "in.chain", "p": 1e-4, "N": list(args.chain_sizes)}
+            jobs.append(("chain", directory, settings, chain_command(lmp, here, directory, settings)))
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        running = [pool.submit(_run_job, *job) for job in jobs]
+        for finished in concurrent.futures.as_completed(running):
+            print(finished.result(), flush=True)
+
+
+def collect(args):
+    """study.py collect"""
+    sound_collect.collect(args.out)
+
+
+def figures(args):
+    """study.py figures"""
+    sound_collect.draw(args.out, args.figures)
+
+
+# ---- one-off: the samples written before the decks wrote result.json
+
+LEGACY_NAME = re.compile(r"p([0-9.e+-]+)_H([0-9]+)_s([0-9]+)(?:_m([0-9.e+-]+))?(?:_v([0-9.e+-]+))?")
+OLD_FILES = ("summary.txt", "moduli.txt", "checks.txt")
+
+
+def _text_number(text):
+    """a value of the old key-value files as the deck prints it in result.json"""
+    try:
+        return _number(text)
+    except ValueError:
+        return text
+
+
+def _old_values(path):
+    """the "key value" lines of an old file, numbers kept as printed"""
+    values = {}
+    with open(path) as handle:
+        for line in handle:
+            words = line.split()
+            if len(words) == 2:
+                values[words[0]] = _text_number(words[1])
+    return values
+
+
+def legacy_result(directory):
+    """result.json of a sample directory of the old decks (summary.txt,
+    moduli.txt, checks.txt, and log.lammps or, in record/, log_summary.txt
+    for "packing: at rest"), in the order in.sound writes it now, or None
+    when it had not finished (no moduli.txt)"""
+    if not os.path.exists(os.path.join(directory, "moduli.txt")):
+        return None
+    summary = _old_values(os.path.join(directory, "summary.txt"))
+    moduli = _old_values(os.path.join(directory, "moduli.txt"))
+    result = {key: summary[key] for key in sound_collect.SUMMARY_KEYS if key in summary and key != "wall_seconds"}
+    log = next(os.path.join(directory, name) for name in ("log.lammps", "log_summary.txt")
+               if os.path.exists(os.path.join(directory, name)))
+    with open(log) as handle:
+        result["at_rest"] = any(line.startswith("packing: at rest") for line in handle)
+    result.update(moduli)
+    checks = os.path.join(directory, "checks.txt")
+    if os.path.exists(checks):
+        result["checks"] = _old_values(checks)
+    if "wall_seconds" in summary:
+        result["wall_seconds"] = summary["wall_seconds"]
+    return result
+
+
+def migrate_directory(directory, remove_old=False):
+    """job.json (settings from the directory's name and summary.txt) and
+    result.json (legacy_result) of one old sample directory; a directory of
+    the new decks run by the old run_production.sh (result.json, no
+    job.json, wall_seconds alone in summary.txt) gets its job.json and its
+    wall_seconds.  remove_old: delete the old files afterwards (record/).
+    What was done, or None when nothing was to do."""
+    match = LEGACY_NAME.fullmatch(os.path.basename(directory))
+    if not match or os.path.exists(os.path.join(directory, study.JOB)):
+        return None
+    result = study.read_result(directory)
+    if result is None:
+        result = legacy_result(directory)
+        if result is None:
+            return None
+        study.write_result(directory, result)
+        done = "job.json, result.json"
+    else:
+        summary = os.path.join(directory, "summary.txt")
+        if "wall_seconds" not in result and os.path.exists(summary):
+            add_wall_seconds(directory, read_key_values(summary)["wall_seconds"])
+        done = "job.json"
+    p, H, seed, mass, speed = match.groups()
+    study.write_job(directory, sample_settings(p, H, seed, result["W"], result["D"], mass or DEFAULT_MASS,
+                                               speed or DEFAULT_SPEED))
+    if remove_old:
+        for name in OLD_FILES:
+            if os.path.exists(os.path.join(directory, name)):
+                os.remove(os.path.join(directory, name))
+    return done
+
+
+def migrate(args):
+    """study.py migrate"""
+    for name in sorted(os.listdir(args.out)):
+        done = migrate_directory(os.path.join(args.out, name), args.remove_old)
+        if done:
+            print(f"{name}: {done}")
+
+
+def main(here, argv=None):
+    """examples/sound/study.py (here: examples/sound)"""
+    def common(parser, figures_too=False):
+        parser.add_argument("--out", default=os.path.join(here, "out"),
+                            help="the jobs' directory (default: examples/sound/out; 3D: out3d)")
+        if figures_too:
+            parser.add_argument("--figures", default=os.path.join(here, "figures"),
+                                help="where the PNGs go (default: examples/sound/figures)")
+
+    def run_arguments(parser):
+        common(parser)
+        parser.add_argument("--lmp", default=default_lmp(here), help="LAMMPS (default: build/lammps/lmp)")
+        parser.add_argument("--jobs", type=int, default=2, help="samples at a time, one core each (default 2)")
+        parser.add_argument("--pressures", nargs="+", default=list(PRESSURES),
+                            help="target pressures p, as the directory names show them (default 1e-4 ... 1e-7)")
+        parser.add_argument("--heights", nargs="+", type=int, default=list(HEIGHTS), help="target heights H (25 8)")
+        parser.add_argument("--seeds", nargs="+", type=int, default=list(SEEDS), help="seeds (1 2 3 4)")
+        parser.add_argument("--width", default="24", help="width W (periodic), d (24)")
+        parser.add_argument("--depth", default="0", help="depth D of a 3D packing; 0: 2D (default)")
+        parser.add_argument("--piston-mass", default=DEFAULT_MASS,
+                            help="the piston's mass / the grains' (1; others go to ..._m<mass>)")
+        parser.add_argument("--piston-speed", default=DEFAULT_SPEED,
+                            help="terminal speed of the piston's dashpot, 0: free (0.001; others go to ..._v<speed>)")
+        parser.add_argument("--var", nargs=2, action="append", metavar=("NAME", "VALUE"),
+                            help="another variable of in.sound (recorded in job.json), e.g. --var max_checks 8000")
+        parser.add_argument("--chain", action="store_true", help="also the 1D chain (in.chain) into OUT/chain")
+        parser.add_argument("--chain-sizes", nargs="+", type=int, default=list(CHAIN_SIZES),
+                            help="the chain's N (8 16 ... 2048)")
+        parser.set_defaults(here=here)
+
+    def migrate_arguments(parser):
+        common(parser)
+        parser.add_argument("--remove-old", action="store_true",
+                            help="delete summary.txt, moduli.txt, checks.txt once converted (record/)")
+
+    return study.main("Paper 003's sound study: run the samples, collect the tables, draw the figures.", {
+        "run": (run, "run the samples not yet finished (resumable)", run_arguments),
+        "collect": (collect, "results.json and tables.md into OUT, the tables on stdout", common),
+        "figures": (figures, "the PNG figures", lambda parser: common(parser, figures_too=True)),
+        "migrate": (migrate, "one-off: job.json and result.json for the samples of the old decks",
+                    migrate_arguments),
+    }, argv)
