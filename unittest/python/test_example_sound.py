@@ -1,41 +1,91 @@
-"""examples/sound end to end on small systems: the decks run in LAMMPS and
-acoustic_tools.sound reads their outputs.  The 1D chain must show paper 003's
-exponents (gamma = 2/3 for condition A, 1 for B); a small confined packing
-must reach its pressure at rest and carry a pulse at about paper 003's speed."""
+"""examples/sound end to end on small systems, through its entry point
+examples/sound/study.py: `run` runs the decks in LAMMPS (a small confined
+packing and a short 1D chain, two jobs at a time), each job's job.json and
+result.json are checked, and `collect` turns them into results.json and
+tables.md.  The 1D chain must show paper 003's exponents (gamma = 2/3 for
+condition A, 1 for B); a small confined packing must reach its pressure at
+rest and carry a pulse at about paper 003's speed."""
+import json
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
 
-from acoustic_tools import lammps_output, network_moduli, sound
+from acoustic_tools import lammps_output, network_moduli, sound, study
 
 LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "sound")
 
 
-def run_deck(tmp_path, deck, variables):
-    command = [LMP, "-in", os.path.join(HERE, deck), "-log", str(tmp_path / "log.lammps"), "-nocite",
-               "-screen", "none"]
-    for name, value in variables.items():
-        command += ["-var", name] + str(value).split()
-    done = subprocess.run(command, cwd=tmp_path, capture_output=True, text=True, timeout=300)
-    log = (tmp_path / "log.lammps").read_text()
-    assert done.returncode == 0, log[-3000:]
-    return log
+def study_py(cwd, *arguments):
+    """examples/sound/study.py with these arguments; its stdout"""
+    done = subprocess.run([sys.executable, os.path.join(HERE, "study.py")] + list(arguments), cwd=cwd,
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stdout + done.stderr
+    return done.stdout
 
 
-def test_chain_exponents(tmp_path):
-    run_deck(tmp_path, "in.chain", {"dir": tmp_path, "N": "32 64 128"})
+@pytest.fixture(scope="module")
+def jobs(tmp_path_factory):
+    """study.py run of one small packing (W = H = 8, p = 1e-4, thermo every
+    10 steps of the compression) and of the chain N = 32, 64, 128"""
+    out = tmp_path_factory.mktemp("sound")
+    printed = study_py(out, "run", "--lmp", LMP, "--out", str(out), "--jobs", "2", "--pressures", "1e-4",
+                       "--heights", "8", "--seeds", "1", "--width", "8", "--var", "thermo_every", "10",
+                       "--chain", "--chain-sizes", "32", "64", "128")
+    return out, printed
+
+
+def test_run_writes_job_and_result(jobs):
+    out, printed = jobs
+    sample = out / "p1e-4_H8_s1"
+    assert "p=1e-4 H=8 seed=1: moduli: sigma1/sigma2" in printed
+    settings = study.read_job(str(sample))
+    assert settings == {"kind": "sample", "deck": "in.sound", "p": 1e-4, "H": 8, "seed": 1, "W": 8, "D": 0,
+                        "piston_mass": 1, "piston_speed": 0.001, "variables": {"thermo_every": "10"}}
+    result = study.read_result(str(sample))
+    assert result["at_rest"] is True and result["p_target"] == 1e-4 and result["W"] == 8
+    assert result["wall_seconds"] >= 0
+    for key in ("h", "p", "p_peak", "N", "max_acceleration", "packing_steps", "C11", "C33_half"):
+        assert isinstance(result[key], (int, float)), key
+    # the old key-value files are gone: result.json is the sample's one result
+    for name in ("summary.txt", "moduli.txt", "checks.txt"):
+        assert not (sample / name).exists(), name
+    # a second run finds everything done and runs nothing
+    assert study_py(out, "run", "--lmp", LMP, "--out", str(out), "--pressures", "1e-4", "--heights", "8",
+                    "--seeds", "1", "--width", "8", "--chain", "--chain-sizes", "32", "64", "128") == ""
+
+
+def test_chain_exponents(jobs):
+    out, _ = jobs
+    chain = out / "chain"
+    result = study.read_result(str(chain))
+    assert result["N"] == [32, 64, 128] and result["free_dofs"] == [2 * n for n in (32, 64, 128)]
     for condition, gamma in (("A", 2.0 / 3.0), ("B", 1.0)):
         sizes = [32, 64, 128]
         amplitudes = []
         for n in sizes:
-            t, f = sound.read_pulse(str(tmp_path / f"chain_{condition}_{n}.dat"))
+            t, f = sound.read_pulse(str(chain / f"chain_{condition}_{n}.dat"))
             amplitudes.append(sound.coherent_peak(t, f)["amplitude"])
         _, slopes = sound.effective_exponents(sizes, amplitudes)
         # between 64 and 128 the effective exponent is within 0.01 of its limit
         assert -slopes[-1] == pytest.approx(gamma, abs=0.01), condition
+
+
+def test_collect_reads_the_jobs(jobs):
+    out, _ = jobs
+    printed = study_py(out, "collect", "--out", str(out))
+    assert (out / "tables.md").read_text() == printed
+    results = json.loads((out / "results.json").read_text())
+    sample = results["samples"]["p0.0001_H8_s1"]
+    result = study.read_result(str(out / "p1e-4_H8_s1"))
+    assert sample["C22"] == result["C22"] and sample["h"] == result["h"]
+    assert sample["sigma_ratio"] == result["checks"]["sigma_ratio"] and sample["at_rest"] is True
+    assert results["chain"]["A"]["N"] == [32, 64, 128] and len(results["chain"]["A"]["gamma_eff"]) == 2
+    assert results["pressures"]["0.0001"]["samples"] == 0     # no H = 25 partner: no time of flight
+    assert "| 0.0001 | ACOUSTIC |" in printed and "chain A: N [32, 64, 128]" in printed
 
 
 def thermo_columns(log_text, first):
@@ -57,10 +107,11 @@ def thermo_columns(log_text, first):
     return {name: table[:, k] for k, name in enumerate(names)}
 
 
-def test_small_packing(tmp_path):
-    log = run_deck(tmp_path, "in.sound", {"here": HERE, "p": "1e-4", "W": 8, "H": 8, "seed": 1, "dir": tmp_path,
-                                          "thermo_every": 10})
-    summary = lammps_output.read_key_values(str(tmp_path / "summary.txt"))
+def test_small_packing(jobs):
+    out, _ = jobs
+    tmp_path = out / "p1e-4_H8_s1"
+    log = (tmp_path / "log.lammps").read_text()
+    summary = study.read_result(str(tmp_path))
     assert summary["p"] == pytest.approx(1e-4, rel=0.02)
     assert summary["max_acceleration"] < 1e-10
     assert "packing: at rest" in log
@@ -79,7 +130,7 @@ def test_small_packing(tmp_path):
     moves = np.abs(np.diff(h)) / np.maximum(np.diff(step), 1)
     assert moves.max() <= fastest * dt * 1.01, "a jump of the piston"
     # the paper's anisotropy of a load-controlled compression: sigma1/sigma2 < 1
-    checks = lammps_output.read_key_values(str(tmp_path / "checks.txt"))
+    checks = summary["checks"]
     assert checks["sigma_ratio"] < 1.0
     for key in sound.CHECKS:
         assert key in checks, key
@@ -92,7 +143,7 @@ def test_small_packing(tmp_path):
     t, f = sound.read_pulse(str(tmp_path / "pulse_A.dat"))
     peak = sound.coherent_peak(t, f)
     assert summary["h"] / peak["t_peak"] == pytest.approx(0.26, rel=0.3)
-    moduli = lammps_output.read_key_values(str(tmp_path / "moduli.txt"))
+    moduli = summary
     for key in ("C11", "C12", "C22", "C33"):
         assert moduli[key] > 0.0, key
     # the DEM's moduli are those of the linear contact network (C33 a little
