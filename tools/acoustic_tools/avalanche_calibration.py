@@ -11,7 +11,10 @@ importable (build/lammps-tree/python) with its library (build/lammps).
   calibration_scan    all of it for every source and scanned parameter
 """
 import numpy as np
-from lammps import lammps, LMP_STYLE_GLOBAL, LMP_STYLE_LOCAL, LMP_TYPE_ARRAY, LMP_TYPE_VECTOR
+try:        # the scan needs LAMMPS's Python module; its parameters (SCANS, SOURCES) do not
+    from lammps import lammps, LMP_STYLE_GLOBAL, LMP_STYLE_LOCAL, LMP_TYPE_ARRAY, LMP_TYPE_VECTOR
+except ImportError:
+    lammps = None
 
 from . import sound
 
@@ -28,6 +31,9 @@ def open_layer(restart, material):
     the path of examples/avalanche/in.material, which defines d, dt and the
     glass's elastic constants), the groups J (grains touching the base) and
     top (grains within one diameter of the highest grain centre)"""
+    if lammps is None:
+        raise ImportError("the calibration scan needs LAMMPS's Python module (PYTHONPATH=build/lammps-tree/python "
+                          "LD_LIBRARY_PATH=build/lammps, README.md)")
     lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
     lmp.commands_string(f"""
 include         {material}
@@ -122,7 +128,7 @@ def calibration_scan(restart, material, freq, scans, sources=SOURCES, spectrum=T
     each source and each scanned parameter (scans: name -> values, the others
     at REFERENCE) a friction_update, and with spectrum the
     spectrum_and_speed of each kappa_scale of the scans; the dict that
-    calibrate.py writes as JSON."""
+    `examples/avalanche/study.py calibrate` writes as JSON."""
     lmp = open_layer(restart, material)
     d = lmp.extract_variable("d")
     where = layer_geometry(lmp)

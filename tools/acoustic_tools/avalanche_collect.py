@@ -1,41 +1,48 @@
-"""Collect the ensembles of examples/avalanche (run_ensemble.sh and the studies
-of run_production.sh) into the tables and figures of its RESULTS.md;
-examples/avalanche/collect.py is the command line.
+"""The jobs of examples/avalanche (acoustic_tools.avalanche_study runs them)
+into the tables and figures of its RESULTS.md; `examples/avalanche/study.py
+collect` and `figures` are the command lines.
 
-OUT (the production outputs, or the record of avalanche_record) holds
-ensemble_periodic/H<H>/s<seed>/, ensemble/H<H>/s<seed>/ (free ends, 400 d),
-ensemble_L<length>/... (free ends of another length), ensemble_E<modulus>/...
-and ensemble_e<restitution>/... (another contact law), each packing with
-log.deposit, log.f0, log.f70 and the t_con runs log.tcon_f*_<theta>[_u<hold>];
-kappa/k<kappa>/... and kappa_free/k<kappa>/... (the 70 kHz shift against
-kappa_scale) and switch_on/at<angle>[_k<kappa>]/... (70 kHz switched on at
-rest).  Reading:
+The jobs are directories, one LAMMPS run each, with the job's settings in
+job.json (written by the run command) and what the deck measured in
+result.json (written by the deck); acoustic_tools.study reads them.  Nothing
+is read from a directory's name.  The settings say what a job is:
 
-  ensembles, packing, result, deposit, other_frequencies, angle_lines,
-  flow_onset, last_mu_factor, first_angle, time_before_onset, kappa_scale
-                        the logs of each packing, geometry by geometry
-  kappa_study, switch_on_study, paired_packings, coupling_summary
+  kind       "deposit" (in.deposit), "ramp" (a tilt ramp of in.avalanche) or
+             "tcon" (one angle above theta_m from a ramp's last static state)
+  H, seed    the packing; with free (1: free ends, 0: periodic), layer (its
+             length in d) and the contact law Edem, rest (null: in.material's)
+             it names the packing, and a job's deposit is the job named by
+             its setting "deposit"
+  tag, freq, kappa, switch_on, theta, tuniform, ...
+             the ramp's or the run's variables
+
+Reading:
+
+  load, packing_key, geometry, geometries, ensembles, packing
+                        the ensembles of ramps, geometry by geometry
+  angles, flow_onset, last_mu_factor, first_angle, time_before_onset
+                        what a ramp's angles say
+  kappa_study, switch_on_study, paired_ramps, coupling_summary
                         the studies beside the packings of a set
   summarise, theta_slope, slope, tcon_one_degree_above, tcon_at_angle,
   tcon_runs_at_angle, tcon_against_hold, mean_with_censored, held_series
                         ensemble statistics
   print_tables, print_kappa, print_switch_on, print_couplings, ...
-                        the markdown tables on stdout
-  figures, kappa_figure, thetam_table, tcon_rows, tcon_table_lines
-                        the figures (avalanche_figures) and their tables
-  collect               all of it: what collect.py does
+                        the markdown tables
+  study_data, write_tables, draw_figures, collect, figures
+                        all of it: tables and summary.json, and the figures
 """
-import glob
+import contextlib
+import io
 import json
 import os
-import re
 import sys
 
 import numpy as np
 
 from . import avalanche as av
 from . import avalanche_figures as figs
-from .lammps_log import wall_time
+from . import study
 from .lammps_output import read_dump
 from .stats import mean_sd
 
@@ -47,236 +54,269 @@ PAPER = {3.0: (20.0, 14.5), 14.4: (17.0, np.nan)}
 PAPER_SLOPE = -0.26
 PAPER_TCON_H6_19DEG = (1.15, 0.30)
 
-RESULT = re.compile(r"theta_m = ([0-9.]+|none) deg\s+t_con = ([-0-9.]+) s")
-GEOMETRIES = (("ensemble_periodic", "periodic"), ("ensemble", "free ends, 400 d"))
 PAPER_TCON_ANGLE_H6 = 19.0
 DEFAULT_TUNIFORM = 0.01   # s, in.avalanche's uniform hold (its thold)
 FOLLOW = 1.3              # s, twin + tfollow: how long a t_con run follows its angle
-TCON_LOG = re.compile(r"([0-9.]+)(?:_u([0-9.e-]+))?")   # log.tcon_TAG_<theta>[_u<tuniform>]
+DEFAULT_LAYER = 400       # d, paper 000's free-ends layer
+SET_KAPPA = 0.3           # kappa_scale of the ensembles (avalanche_study's default)
+# the kappa_scale studies: 70 kHz ramps at another kappa_scale, beside the
+# same packings' ramps at SET_KAPPA; one study per boundary condition
+# (free: 0 periodic, 1 free ends): (name of its table and figure, label)
+KAPPA_STUDIES = {0: ("kappa", "periodic"), 1: ("kappa_free", "free ends")}
+
+
+def load(top):
+    """{name: job} of the finished jobs in top: each job a dict with its
+    "name", "dir", "settings" (job.json) and "result" (result.json)."""
+    return {os.path.basename(d): {"name": os.path.basename(d), "dir": d, "settings": s, "result": r}
+            for d, s, r in study.finished_jobs(top)}
+
+
+def _jobs(top_or_jobs):
+    return load(top_or_jobs) if isinstance(top_or_jobs, (str, os.PathLike)) else top_or_jobs
+
+
+def geometry(settings):
+    """The geometry of a job's packing: (free, layer, Edem, rest); the length
+    of a periodic layer is not part of it (the periodic set has 80 d and
+    40 d layers)."""
+    free = int(settings.get("free", 1))
+    return (free, float(settings.get("layer", DEFAULT_LAYER)) if free else None,
+            settings.get("Edem"), settings.get("rest"))
+
+
+def packing_key(settings):
+    """What names a packing: its geometry, H and seed."""
+    return geometry(settings) + (float(settings["H"]), str(settings["seed"]))
+
+
+def geometry_label(key):
+    """"periodic" or "free ends, <layer> d", with the contact law when it is not in.material's."""
+    free, layer, modulus, restitution = key
+    label = f"free ends, {layer:g} d" if free else "periodic"
+    label += f", E = {float(modulus):g} Pa" if modulus is not None else ""
+    label += f", restitution {float(restitution):g}" if restitution is not None else ""
+    return label
+
+
+def _geometry_order(key):
+    free, layer, modulus, restitution = key
+    default = modulus is None and restitution is None
+    first = 0 if (not free and default) else 1 if (free and layer == DEFAULT_LAYER and default) else 2
+    return (first, free, layer or 0, float(modulus or 0), float(restitution or 0))
 
 
 def geometries(top):
-    """(directory, label) of the ensembles in top: the periodic set, the
-    free-ends set (400 d), then the free-ends sets of other lengths
-    (ensemble_L<length>, run_ensemble.sh with AVALANCHE_LAYER) or another
-    contact law (..._E<modulus>_e<restitution>, AVALANCHE_EDEM and
-    AVALANCHE_REST), by length and modulus."""
-    other = []
-    for d in glob.glob(os.path.join(top, "ensemble_*")):
-        m = re.fullmatch(r"ensemble(?:_L([0-9]+))?(?:_E([0-9.e+]+))?(?:_e([0-9.]+))?", os.path.basename(d))
-        if not m or not any(m.groups()):
-            continue
-        length, modulus, restitution = m.groups()
-        label = f"free ends, {length or 400} d"
-        label += f", E = {float(modulus):g} Pa" if modulus else ""
-        label += f", restitution {restitution}" if restitution else ""
-        key = (int(length or 400), float(modulus or 0), float(restitution or 0))
-        other.append((key, label, os.path.basename(d)))
-    return list(GEOMETRIES) + [(sub, label) for _, label, sub in sorted(other)]
+    """(geometry, label) of the ensembles among the jobs: the periodic set,
+    the free-ends set (400 d), then the others (another length, another
+    contact law) by length, modulus and restitution."""
+    keys = {geometry(j["settings"]) for j in _jobs(top).values() if _in_ensemble(j)}
+    return [(key, geometry_label(key)) for key in sorted(keys, key=_geometry_order)]
 
 
-def result(log):
-    """(theta_m, t_con) of an in.avalanche log; nan when absent or none."""
-    if not os.path.exists(log):
+def _in_ensemble(job):
+    """A ramp or t_con run of the ensembles: the set's kappa_scale, ultrasound
+    on from the start (no switch-on)."""
+    s = job["settings"]
+    return (s.get("kind") in ("ramp", "tcon") and float(s.get("kappa", SET_KAPPA)) == SET_KAPPA
+            and s.get("switch_on") is None)
+
+
+def result(job):
+    """(theta_m, t_con) of a ramp or t_con job; nan when absent or none."""
+    if job is None:
         return np.nan, np.nan
-    for line in open(log):
-        m = RESULT.search(line)
-        if m:
-            tm = float(m.group(1)) if m.group(1) != "none" else np.nan
-            return tm, float(m.group(2)) if np.isfinite(tm) else np.nan
-    return np.nan, np.nan
+    r = job["result"]
+    tm = r.get("theta_m")
+    if tm is None:
+        return np.nan, np.nan
+    tc = r.get("t_con")
+    return float(tm), float(tc) if tc is not None else np.nan
 
 
-def deposit(log):
-    """(grains, base grains, measured H/d, length/d) of a log.deposit; zeros
-    and nan without its deposit line."""
-    for line in open(log):
-        if line.startswith("deposit:"):
-            n = re.search(r"(\d+) grains on (\d+) base", line)
-            h = re.search(r"H = ([0-9.]+) d", line)
-            length = re.search(r"box ([0-9.]+) d long", line)
-            return int(n.group(1)), int(n.group(2)), float(h.group(1)), float(length.group(1))
-    return 0, 0, np.nan, np.nan
+def deposit(jobs, job):
+    """(grains, base grains, measured H/d, length/d) of the deposit of a ramp
+    or t_con job; zeros and nan when its deposit has not finished."""
+    d = jobs.get(job["settings"].get("deposit", ""))
+    if d is None:
+        return 0, 0, np.nan, np.nan
+    r = d["result"]
+    return int(r["grains"]), int(r["base"]), float(r["H_measured"]), float(r["length"])
 
 
-def packing(path):
-    """Everything about one packing directory."""
-    n, nb, hm, length = deposit(os.path.join(path, "log.deposit"))
-    p = {"path": path, "seed": os.path.basename(path)[1:], "grains": n, "base": nb, "H_measured": hm,
-         "length": length}
+def _wall(job):
+    return float(job["result"].get("wall_time", np.nan)) if job else np.nan
+
+
+def packing(jobs, ramps, tcons):
+    """Everything about one packing: its ramps {tag: job} at the set's
+    kappa_scale and its t_con runs (jobs)."""
+    any_job = next(iter(ramps.values()))
+    s = any_job["settings"]
+    n, nb, hm, length = deposit(jobs, any_job)
+    p = {"dirs": {tag: j["dir"] for tag, j in ramps.items()}, "seed": str(s["seed"]), "grains": n, "base": nb,
+         "H_measured": hm, "length": length, "deposit": s.get("deposit")}
     for tag in ("f0", "f70"):
-        log = os.path.join(path, f"log.{tag}")
-        p[tag] = result(log)
-        p[f"{tag}_wall"] = wall_time(log) if os.path.exists(log) else np.nan
-        rest = ""
-        if os.path.exists(log):
-            m = re.search(r"\((at rest|NOT at rest after tsettle|no pre-ramp)\)", open(log).read())
-            rest = m.group(1) if m else ""
-        p[f"{tag}_rest"] = rest
-        p[f"{tag}_onset"] = flow_onset(log) if os.path.exists(log) and np.isfinite(p[tag][0]) else np.nan
-        p[f"tcon_{tag}"], p[f"tcon_{tag}_held"] = [], []
-        for t in sorted(glob.glob(os.path.join(path, f"log.tcon_{tag}_*"))):
-            m = TCON_LOG.fullmatch(os.path.basename(t)[len(f"log.tcon_{tag}_"):])
-            if not m:
-                continue
-            if m.group(2):            # AVALANCHE_TUNIFORM: (hold, theta, t_con, run tag)
-                p[f"tcon_{tag}_held"].append((float(m.group(2)), float(m.group(1)), result(t)[1],
-                                              os.path.basename(t)[len("log."):]))
-            else:
-                p[f"tcon_{tag}"].append((float(m.group(1)), result(t)[1]))
-    p["other"] = other_frequencies(path)
+        job = ramps.get(tag)
+        p[tag] = result(job)
+        p[f"{tag}_wall"] = _wall(job)
+        p[f"{tag}_rest"] = job["result"].get("settled", "") if job else ""
+        p[f"{tag}_onset"] = flow_onset(job) if job and np.isfinite(p[tag][0]) else np.nan
+        runs = sorted(((float(t["settings"]["theta"]), t["settings"].get("tuniform"), t) for t in tcons
+                       if t["settings"].get("ramp_tag") == tag), key=lambda r: (r[0], r[1] is not None, r[1] or 0))
+        p[f"tcon_{tag}"] = [(theta, result(t)[1]) for theta, hold, t in runs if hold is None]
+        p[f"tcon_{tag}_held"] = sorted((float(hold), theta, result(t)[1], t["dir"], t["settings"]["tag"])
+                                       for theta, hold, t in runs if hold is not None)
+    p["other"] = sorted((float(j["settings"]["freq"]) / 1e3,) + result(j) + (flow_onset(j), last_mu_factor(j))
+                        for tag, j in ramps.items() if tag not in ("f0", "f70") and np.isfinite(result(j)[0]))
     return p
 
 
-def other_frequencies(path):
-    """Ramps of a packing at drive frequencies other than 0 and 70 kHz
-    (run_ensemble.sh ... H SEED 60e3 writes log.f60): [(kHz, theta_m, t_con,
-    first spreading flow, mean mu*/mu of the last angle before theta_m)]."""
-    rows = []
-    for log in glob.glob(os.path.join(path, "log.f*")):
-        m = re.fullmatch(r"log\.f([0-9.]+)", os.path.basename(log))
-        if not m or m.group(1) in ("0", "70"):
-            continue
-        tm, tc = result(log)
-        if np.isfinite(tm):
-            rows.append((float(m.group(1)), tm, tc, flow_onset(log), last_mu_factor(log)))
-    return sorted(rows)
-
-
 def ensembles(top):
-    """{geometry label: {H: [packings]}} for the geometries present."""
+    """{geometry label: {H: [packings]}} for the geometries present: the
+    ramps at the set's kappa_scale without switch-on, grouped by packing;
+    a packing needs its deposit and theta_m at 0 or 70 kHz."""
+    jobs = _jobs(top)
+    by_packing = {}
+    for job in jobs.values():
+        if not _in_ensemble(job):
+            continue
+        s = job["settings"]
+        ramps, tcons = by_packing.setdefault(packing_key(s), ({}, []))
+        if s["kind"] == "ramp":
+            ramps[s["tag"]] = job
+        else:
+            tcons.append(job)
     out = {}
-    for sub, label in geometries(top):
+    for key, label in geometries(jobs):
         by_h = {}
-        for d in sorted(glob.glob(os.path.join(top, sub, "H*"))):
-            H = float(os.path.basename(d)[1:])
-            packs = [packing(s) for s in sorted(glob.glob(os.path.join(d, "s*")))
-                     if os.path.exists(os.path.join(s, "log.deposit"))]
-            packs = [p for p in packs if np.isfinite(p["f0"][0]) or np.isfinite(p["f70"][0])]
-            if packs:
-                by_h[H] = packs
+        for pkey in sorted((k for k in by_packing if k[:4] == key), key=lambda k: (k[4], k[5])):
+            ramps, tcons = by_packing[pkey]
+            if not ramps or jobs.get(next(iter(ramps.values()))["settings"].get("deposit", "")) is None:
+                continue
+            p = packing(jobs, ramps, tcons)
+            if np.isfinite(p["f0"][0]) or np.isfinite(p["f70"][0]):
+                by_h.setdefault(pkey[4], []).append(p)
         if by_h:
             out[label] = by_h
     return out
 
 
-ANGLE_LINE = re.compile(r"^angle +([0-9.]+) deg: (\w+) after ([0-9.]+) s .* mean mu\*/mu ([0-9.]+)")
-
-
-def angle_lines(log):
+def angles(job):
     """[(angle, state, time followed (s), mean mu*/mu at its end)] of the
-    tested angles of an in.avalanche log, in order."""
-    return [(float(m.group(1)), m.group(2), float(m.group(3)), float(m.group(4)))
-            for m in map(ANGLE_LINE.match, open(log)) if m]
+    tested angles of a ramp or t_con job, in order."""
+    return [(float(a["theta"]), a["state"], float(a["time"]), float(a["mu"])) for a in job["result"]["angles"]]
 
 
-def flow_onset(log):
+def flow_onset(job):
     """The first angle of a ramp that ended with a flow: partial (more than
     half of the observed grains still mobile after 0.1 + tfollow s, not
     uniform) or uniform; nan if none.  It is at or below theta_m."""
-    for theta, state, _, _ in angle_lines(log):
+    for theta, state, _, _ in angles(job):
         if state in ("partial", "uniform"):
             return theta
     return np.nan
 
 
-def last_mu_factor(log):
+def last_mu_factor(job):
     """mean mu*/mu at the end of the last angle before theta_m (nan if none)."""
-    values = [mu for _, state, _, mu in angle_lines(log) if state != "uniform"]
+    values = [mu for _, state, _, mu in angles(job) if state != "uniform"]
     return values[-1] if values else np.nan
 
 
-def first_angle(log):
+def first_angle(job):
     """The first tested angle of a ramp (nan if none)."""
-    lines = angle_lines(log)
+    lines = angles(job)
     return lines[0][0] if lines else np.nan
 
 
-def time_before_onset(log):
+def time_before_onset(job):
     """Simulated time (s) the layer was followed at the tested angles before
     the first spreading flow (nan without a flow); under 70 kHz it creeps
     all that time (the pre-ramp and its hold, at most tsettle, come on top)."""
-    lines = angle_lines(log)
+    lines = angles(job)
     spreading = [i for i, (_, state, _, _) in enumerate(lines) if state in ("partial", "uniform")]
     return sum(t for _, _, t, _ in lines[:spreading[0]]) if spreading else np.nan
 
 
-# the kappa_scale studies of run_production.sh: directory -> (the geometry
-# whose ramps at the default kappa_scale 0.3 they stand beside, its label)
-KAPPA_SETS = {"kappa": ("ensemble_periodic", "periodic"), "kappa_free": ("ensemble", "free ends")}
-SET_KAPPA = 0.3               # kappa_scale of the ensembles (run_ensemble.sh's default)
+def _ramps_by_packing(jobs):
+    """{packing key: {tag: ramp job}} of the ensembles' ramps."""
+    found = {}
+    for job in jobs.values():
+        if _in_ensemble(job) and job["settings"]["kind"] == "ramp":
+            found.setdefault(packing_key(job["settings"]), {})[job["settings"]["tag"]] = job
+    return found
 
 
-def paired_packings(top, study, prefix, reference):
-    """(value, H, seed, packing dir, reference dir) for every packing
-    OUT/<study>/<prefix><value>/H<H>/s<seed> of a study beside a set (value:
-    the rest of the directory name, a string): the
-    same packing in OUT/<reference>.  A packing whose deposit differs from
-    the reference's (grains, base, H, length of log.deposit) is not the same
-    packing: it is left out, with a note on stderr."""
+def paired_ramps(jobs, ramps):
+    """(ramp, the same packing's ramps {tag: job} in its ensemble) for every
+    ramp of a study.  A packing whose deposit differs from the ensemble's
+    (grains, base, H, length) is not the same packing: it is left out, with
+    a note on stderr."""
+    reference = _ramps_by_packing(jobs)
     pairs = []
-    for d in sorted(glob.glob(os.path.join(top, study, prefix + "*", "H*", "s*"))):
-        vdir, hdir = os.path.dirname(os.path.dirname(d)), os.path.dirname(d)
-        value, H = os.path.basename(vdir)[len(prefix):], float(os.path.basename(hdir)[1:])
-        ref = os.path.join(top, reference, os.path.basename(hdir), os.path.basename(d))
-        if not os.path.exists(os.path.join(ref, "log.deposit")) or \
-                deposit(os.path.join(d, "log.deposit")) != deposit(os.path.join(ref, "log.deposit")):
-            print(f"collect: {d} left out: its deposit is not that of {ref}", file=sys.stderr)
+    for job in sorted(ramps, key=lambda j: j["name"]):
+        ref = reference.get(packing_key(job["settings"]))
+        ref_job = next(iter(ref.values()), None) if ref else None
+        if ref_job is None or jobs.get(ref_job["settings"].get("deposit", "")) is None or \
+                deposit(jobs, job) != deposit(jobs, ref_job):
+            print(f"collect: {job['dir']} left out: its deposit is not that of its ensemble's packing "
+                  f"({ref_job['dir'] if ref_job else 'none'})", file=sys.stderr)
             continue
-        pairs.append((value, H, os.path.basename(d)[1:], d, ref))
+        pairs.append((job, ref))
     return pairs
 
 
-def kappa_study(top, kset="kappa"):
+def _study_key(job):
+    s = job["settings"]
+    return (float(s["H"]), str(s["seed"]))
+
+
+def kappa_study(top, free=0):
     """Rows (kappa, H, seed, theta_m 0 Hz, theta_m 70 kHz, shift, mean mu*/mu
-    below theta_m, shift of the first spreading flow) of the 70 kHz ramps in OUT/<kset>/k<kappa>/H<H>/s<seed>,
-    each beside the same packing's ramps at the default kappa_scale 0.3 in
-    the geometry of KAPPA_SETS[kset] (paired_packings)."""
+    below theta_m, shift of the first spreading flow) of the 70 kHz ramps at
+    a kappa_scale other than the set's (no switch-on) with free ends (free
+    1) or periodic (free 0), each beside the same packing's ramps at the
+    set's kappa_scale (paired_ramps)."""
+    jobs = _jobs(top)
+    study_ramps = [j for j in jobs.values() if j["settings"].get("kind") == "ramp"
+                   and j["settings"].get("tag") == "f70" and j["settings"].get("switch_on") is None
+                   and float(j["settings"].get("kappa", SET_KAPPA)) != SET_KAPPA
+                   and int(j["settings"].get("free", 1)) == free]
     rows = {}                 # (kappa, H, seed) -> row: the reference ramps appear once
-    for kappa, H, seed, d, ref in paired_packings(top, kset, "k", KAPPA_SETS[kset][0]):
-        t0 = result(os.path.join(ref, "log.f0"))[0]
-        onset0 = flow_onset(os.path.join(ref, "log.f0"))
-        for k, path in ((SET_KAPPA, ref), (float(kappa), d)):
-            log = os.path.join(path, "log.f70")
-            if os.path.exists(log) and np.isfinite(result(log)[0]):
-                t70 = result(log)[0]
-                rows[(k, H, seed)] = (k, H, seed, t0, t70, t0 - t70, last_mu_factor(log), onset0 - flow_onset(log))
+    for job, ref in paired_ramps(jobs, study_ramps):
+        H, seed = _study_key(job)
+        t0 = result(ref.get("f0"))[0]
+        onset0 = flow_onset(ref["f0"]) if "f0" in ref else np.nan
+        for k, ramp in ((SET_KAPPA, ref.get("f70")), (float(job["settings"]["kappa"]), job)):
+            if ramp is not None and np.isfinite(result(ramp)[0]):
+                t70 = result(ramp)[0]
+                rows[(k, H, seed)] = (k, H, seed, t0, t70, t0 - t70, last_mu_factor(ramp), onset0 - flow_onset(ramp))
     return [rows[key] for key in sorted(rows)]
-
-
-# the switch-on study of run_production.sh (set switch_on): 70 kHz ramps of
-# packings of the free-ends set tilted at rest without ultrasound to an angle
-# and driven from 0.5 deg higher on (AVALANCHE_SWITCH_ON), in
-# OUT/switch_on/at<angle>[_k<kappa_scale>]/H<H>/s<seed>, beside the set's own ramps
-SWITCH_ON_SET = ("switch_on", "at", "ensemble")
-KAPPA_SCALE = re.compile(r"kappa_scale ([0-9.eE+-]+)")
-
-
-def kappa_scale(log):
-    """kappa_scale of a ramp, from the first line of its log that gives it"""
-    for line in open(log):
-        m = KAPPA_SCALE.search(line)
-        if m:
-            return float(m.group(1))
-    return np.nan
 
 
 def switch_on_study(top):
     """Rows (H, seed, kappa_scale, first tested angle, theta_m 0 Hz, theta_m
     70 kHz, first spreading flow at 70 kHz, time followed at the angles
-    before it (s), mean mu*/mu before theta_m) of the 70 kHz ramps of the
-    switch-on study and of the same packings' ramps in the free-ends set
-    (ultrasound on from the pre-ramp), sorted by H, packing, kappa_scale and
-    first angle: does the creep at the angles before the flow lower theta_m?"""
+    before it (s), mean mu*/mu before theta_m) of the 70 kHz ramps switched
+    on at rest (setting switch_on) and of the same packings' ramps in their
+    ensemble (ultrasound on from the pre-ramp), sorted by H, packing,
+    kappa_scale and first angle: does the creep at the angles before the
+    flow lower theta_m?"""
+    jobs = _jobs(top)
+    late = [j for j in jobs.values() if j["settings"].get("kind") == "ramp"
+            and j["settings"].get("tag") == "f70" and j["settings"].get("switch_on") is not None]
     rows = {}
-    for _, H, seed, d, ref in paired_packings(top, *SWITCH_ON_SET):
-        t0 = result(os.path.join(ref, "log.f0"))[0]
-        for path in (ref, d):
-            log = os.path.join(path, "log.f70")
-            t70 = result(log)[0]
+    for job, ref in paired_ramps(jobs, late):
+        H, seed = _study_key(job)
+        t0 = result(ref.get("f0"))[0]
+        for ramp in (ref.get("f70"), job):
+            if ramp is None:
+                continue
+            t70 = result(ramp)[0]
             if np.isfinite(t70):
-                key = (H, seed, kappa_scale(log), first_angle(log))
-                rows[key] = key + (t0, t70, flow_onset(log), time_before_onset(log), last_mu_factor(log))
+                key = (H, seed, float(ramp["settings"]["kappa"]), first_angle(ramp))
+                rows[key] = key + (t0, t70, flow_onset(ramp), time_before_onset(ramp), last_mu_factor(ramp))
     return [rows[key] for key in sorted(rows, key=lambda k: (k[0], int(k[1]), k[2], k[3]))]
 
 
@@ -323,7 +363,7 @@ def tcon_against_hold(packs, tag, theta):
     first (tcon_runs_at_angle); nan for a run that was not uniform within
     0.1 + tfollow s."""
     rows = [(DEFAULT_TUNIFORM, tcon_runs_at_angle(packs, tag, theta))]
-    held = [(h, t) for p in packs for h, th, t, _ in p[f"tcon_{tag}_held"] if th == theta]
+    held = [(h, t) for p in packs for h, th, t, *_ in p[f"tcon_{tag}_held"] if th == theta]
     for hold in sorted({h for h, _ in held}):
         rows.append((hold, [t for h, t in held if h == hold]))
     return rows
@@ -466,7 +506,7 @@ def print_tcon_against_hold(by_h):
     """t_con against the hold time of the uniform criterion, at the angles
     where runs with another hold (AVALANCHE_TUNIFORM) are there."""
     cases = sorted({(H, tag, th) for H, packs in by_h.items() for p in packs
-                    for tag in ("f0", "f70") for _, th, _, _ in p[f"tcon_{tag}_held"]})
+                    for tag in ("f0", "f70") for _, th, *_ in p[f"tcon_{tag}_held"]})
     if not cases:
         return
     print("\nt_con against the time the σ criteria must hold (tuniform): the runs packing by packing "
@@ -479,14 +519,11 @@ def print_tcon_against_hold(by_h):
             print(f"  - {hold:g} s: " + ", ".join(num(t, ".2f") for t in times) + f" s: {fmt(ms)} s{bound}")
 
 
-def thetam_table(rows, path):
-    """Fig. 7's table of summarise's rows, written to path and returned:
-    H/d, theta_m mean and s.d. at 0 and 70 kHz, paper 000's values."""
-    table = [(r["H_measured"], r["theta0"][0], r["theta0"][1], r["theta70"][0], r["theta70"][1])
-             + PAPER.get(r["H"], (np.nan, np.nan)) for r in rows]
-    with open(path, "w") as f:
-        f.writelines(" ".join(f"{v:g}" for v in row) + "\n" for row in table)
-    return table
+def thetam_table(rows):
+    """Fig. 7's table of summarise's rows: H/d, theta_m mean and s.d. at 0
+    and 70 kHz, paper 000's values."""
+    return [(r["H_measured"], r["theta0"][0], r["theta0"][1], r["theta70"][0], r["theta70"][1])
+            + PAPER.get(r["H"], (np.nan, np.nan)) for r in rows]
 
 
 def tcon_rows(all_ens, label, free):
@@ -513,69 +550,154 @@ def tcon_table_lines(all_ens, label, free):
     return [f"{name} {th:g} {t:g}\n" for name, th, t in tcon_rows(all_ens, label, free)]
 
 
-def figures(all_ens, summary, top, figdir, couplings=None):
-    """Fig. 7 (and, with couplings (coupling_summary), theta_m at 70 kHz at
-    other couplings beside it), Fig. 8, and from the dumps where they are
-    there Figs. 3, 6/9 and 10, into figdir; their tables (thetam.txt,
-    thetam_free.txt, thetam_k<kappa>.txt, tcon.txt) into top."""
-    os.makedirs(figdir, exist_ok=True)
+def _table_text(rows):
+    return "".join(" ".join(f"{v:g}" for v in row) + "\n" for row in rows)
+
+
+def study_data(top):
+    """Everything the tables and figures are made of, read from the jobs in
+    top: a dict with the ensembles ("ensembles": {label: {H: [packings]}}),
+    their summaries ("summary": {label: (rows, slope 0 kHz, slope 70 kHz)}),
+    the kappa_scale studies ("kappa": {name: rows}), the switch-on study
+    ("switch_on": rows) and its other couplings ("couplings"), and the
+    tables of the figures ("thetam", "thetam_free", "couplings_tables",
+    "tcon", "kappa_tables"; each None or empty where there is nothing to
+    draw)."""
+    jobs = load(top)
+    all_ens = ensembles(jobs)
+    summary = {label: summarise(by_h) for label, by_h in all_ens.items()}
+    kappa = {name: kappa_study(jobs, free) for free, (name, _) in KAPPA_STUDIES.items()}
+    switch_on = switch_on_study(jobs)
+    couplings = coupling_summary(switch_on)
+    data = {"ensembles": all_ens, "summary": summary, "kappa": kappa, "switch_on": switch_on,
+            "couplings": couplings, "label": None, "free": None, "thetam": None, "thetam_free": None,
+            "couplings_tables": [], "tcon": [], "kappa_tables": {}}
     label = "periodic" if "periodic" in all_ens else next(iter(all_ens), None)
-    if label is None:
-        return
-    table7 = thetam_table(summary[label][0], os.path.join(top, "thetam.txt"))
-    free = next((g for g in summary if g.startswith("free")), None)
-    table7_free = None
-    if free and free != label:
-        table7_free = thetam_table(summary[free][0], os.path.join(top, "thetam_free.txt"))
-    measured = {r["H"]: r["H_measured"] for r in summary[free or label][0]}
-    coupling_tables = []
-    for kappa, points in (couplings or {}).items():
-        table = [(measured.get(H, H), t[0], t[1]) for H, t, _ in points]
-        with open(os.path.join(top, f"thetam_k{kappa:g}.txt"), "w") as f:
-            f.writelines(" ".join(f"{v:g}" for v in row) + "\n" for row in table)
-        coupling_tables.append((table, f"kappa_scale {kappa:g}, switched on at rest"))
-    figs.fig_thetam(os.path.join(figdir, "fig7_thetam.png"), table7, label, table7_free, free, coupling_tables, dpi=80)
-    by_h = all_ens[label]
-    a = PAPER_TCON_ANGLE_H6
-    paper = [("paper000_H6_0kHz", a, PAPER_TCON_H6_19DEG[0]), ("paper000_H6_70kHz", a, PAPER_TCON_H6_19DEG[1])]
-    with open(os.path.join(top, "tcon.txt"), "w") as f:
-        f.writelines(tcon_table_lines(all_ens, label, free))
-        f.writelines(f"{name} {theta:g} {t}\n" for name, theta, t in paper)
-    figs.fig_tcon(os.path.join(figdir, "fig8_tcon.png"), tcon_rows(all_ens, label, free) + paper, dpi=80)
-    for H in (6.0, 14.4):
-        packs = by_h.get(H, [])
-        if not packs:
-            continue
-        p = packs[0]
-        dump, cont = os.path.join(p["path"], "f70.dump"), os.path.join(p["path"], "f70.contacts")
-        if os.path.exists(dump) and os.path.exists(cont):
-            frames = read_dump(dump)
-            tm = p["f70"][0] if np.isfinite(p["f70"][0]) else 90.0
-            below = [i for i, fr in enumerate(frames) if fr["v_th"][0] < tm - 1e-6]
-            last, first = frames[below[-1] if below else -1], frames[0]
-            figs.fig_chains(os.path.join(figdir, f"fig10_chains_H{H:g}.png"), last,
-                            av.contact_columns(av.contacts_at(cont, last.timestep)), dpi=80)
-            figs.fig_modes(os.path.join(figdir, f"fig3_modes_H{H:g}.png"),
-                           network=(first, av.contact_columns(av.contacts_at(cont, first.timestep))), dpi=80)
-        sers = [(os.path.join(p["path"], f"{tag}.series"), p[tag][0]) for tag in ("f0", "f70")
-                if np.isfinite(p[tag][0]) and os.path.exists(os.path.join(p["path"], f"{tag}.series"))]
-        if sers:
-            figs.fig_sigma(os.path.join(figdir, f"fig6_9_sigma_H{H:g}.png"),
-                           figs.sigma_runs([s for s, _ in sers], [th for _, th in sers]), dpi=80)
-    held = held_series(by_h.get(6.0, []), "f0", PAPER_TCON_ANGLE_H6)
-    if held:
-        figs.fig_sigma(os.path.join(figdir, "tcon_hold_sigma_H6.png"),
-                       figs.sigma_runs(held, [PAPER_TCON_ANGLE_H6] * len(held)), dpi=80)
+    if label is not None:
+        free = next((g for g in summary if g.startswith("free")), None)
+        data.update(label=label, free=free, thetam=thetam_table(summary[label][0]))
+        if free and free != label:
+            data["thetam_free"] = thetam_table(summary[free][0])
+        measured = {r["H"]: r["H_measured"] for r in summary[free or label][0]}
+        data["couplings_tables"] = [(kappa_scale, [(measured.get(H, H), t[0], t[1]) for H, t, _ in points])
+                                    for kappa_scale, points in couplings.items()]
+        a = PAPER_TCON_ANGLE_H6
+        data["paper_tcon"] = [("paper000_H6_0kHz", a, PAPER_TCON_H6_19DEG[0]),
+                              ("paper000_H6_70kHz", a, PAPER_TCON_H6_19DEG[1])]
+        data["tcon"] = tcon_rows(all_ens, label, free)
+    for free, (name, geometry_name) in KAPPA_STUDIES.items():
+        if kappa[name]:
+            geometry_name = geometry_name.replace(" ", "_")
+            data["kappa_tables"][name] = [(k, H, seed, shift, mu, onset_shift, geometry_name)
+                                          for k, H, seed, t0, t70, shift, mu, onset_shift in kappa[name]]
+    return data
+
+
+def tables_markdown(data):
+    """The markdown tables of every geometry and study (what collect prints)."""
+    text = io.StringIO()
+    with contextlib.redirect_stdout(text):
+        print_tables(data["ensembles"], data["summary"])
+        for free, (name, label) in KAPPA_STUDIES.items():
+            print_kappa(data["kappa"][name], label)
+        print_switch_on(data["switch_on"])
+        print_couplings(data["couplings"])
+    return text.getvalue()
+
+
+def write_tables(data, tables):
+    """Into the directory tables: tables.md (tables_markdown), summary.json
+    (the rows and slopes of each geometry) and the tables of the figures:
+    thetam.txt (Fig. 7, the first geometry), thetam_free.txt (the free-ends
+    one when it is not the first), thetam_k<kappa>.txt (theta_m at 70 kHz
+    at other couplings), tcon.txt (Fig. 8), kappa.txt and kappa_free.txt
+    (the kappa_scale studies).  Returns the markdown."""
+    os.makedirs(tables, exist_ok=True)
+    markdown = tables_markdown(data)
+    with open(os.path.join(tables, "tables.md"), "w") as f:
+        f.write(markdown)
+    if data["thetam"] is not None:
+        with open(os.path.join(tables, "thetam.txt"), "w") as f:
+            f.write(_table_text(data["thetam"]))
+    if data["thetam_free"] is not None:
+        with open(os.path.join(tables, "thetam_free.txt"), "w") as f:
+            f.write(_table_text(data["thetam_free"]))
+    for kappa_scale, rows in data["couplings_tables"]:
+        with open(os.path.join(tables, f"thetam_k{kappa_scale:g}.txt"), "w") as f:
+            f.write(_table_text(rows))
+    if data["label"] is not None:
+        with open(os.path.join(tables, "tcon.txt"), "w") as f:
+            f.writelines(f"{name} {th:g} {t:g}\n" for name, th, t in data["tcon"])
+            f.writelines(f"{name} {theta:g} {t}\n" for name, theta, t in data["paper_tcon"])
+    for name, rows in data["kappa_tables"].items():
+        with open(os.path.join(tables, f"{name}.txt"), "w") as f:
+            f.writelines(f"{k:g} {H:g} {seed} {shift:g} {mu:g} {onset:g} {g}\n" for k, H, seed, shift, mu, onset, g in rows)
+    with open(os.path.join(tables, "summary.json"), "w") as f:
+        json.dump({label: {"rows": rows, "slope0": s0, "slope70": s70}
+                   for label, (rows, s0, s70) in data["summary"].items()}, f, indent=1, default=float)
+    return markdown
+
+
+def draw_figures(data, figdir):
+    """Fig. 7 (with theta_m at 70 kHz at the other couplings beside it),
+    Fig. 8, the kappa_scale shifts, and from the dumps and series where they
+    are there (not in a record) Figs. 3, 6/9 and 10 and the sigma_l of the
+    longest-held t_con runs, into figdir; returns the paths written."""
+    os.makedirs(figdir, exist_ok=True)
+    written = []
+
+    def out(name):
+        written.append(os.path.join(figdir, name))
+        return written[-1]
+
+    label = data["label"]
+    if label is not None:
+        couplings = [(rows, f"kappa_scale {kappa_scale:g}, switched on at rest")
+                     for kappa_scale, rows in data["couplings_tables"]]
+        figs.fig_thetam(out("fig7_thetam.png"), data["thetam"], label, data["thetam_free"], data["free"], couplings,
+                        dpi=80)
+        figs.fig_tcon(out("fig8_tcon.png"), data["tcon"] + data["paper_tcon"], dpi=80)
+        by_h = data["ensembles"][label]
+        for H in (6.0, 14.4):
+            packs = by_h.get(H, [])
+            if not packs:
+                continue
+            p = packs[0]
+            run = p["dirs"].get("f70", "")
+            dump, cont = os.path.join(run, "f70.dump"), os.path.join(run, "f70.contacts")
+            if run and os.path.exists(dump) and os.path.exists(cont):
+                frames = read_dump(dump)
+                tm = p["f70"][0] if np.isfinite(p["f70"][0]) else 90.0
+                below = [i for i, fr in enumerate(frames) if fr["v_th"][0] < tm - 1e-6]
+                last, first = frames[below[-1] if below else -1], frames[0]
+                figs.fig_chains(out(f"fig10_chains_H{H:g}.png"), last,
+                                av.contact_columns(av.contacts_at(cont, last.timestep)), dpi=80)
+                figs.fig_modes(out(f"fig3_modes_H{H:g}.png"),
+                               network=(first, av.contact_columns(av.contacts_at(cont, first.timestep))), dpi=80)
+            sers = [(os.path.join(p["dirs"][tag], f"{tag}.series"), p[tag][0]) for tag in ("f0", "f70")
+                    if np.isfinite(p[tag][0]) and tag in p["dirs"]
+                    and os.path.exists(os.path.join(p["dirs"][tag], f"{tag}.series"))]
+            if sers:
+                figs.fig_sigma(out(f"fig6_9_sigma_H{H:g}.png"),
+                               figs.sigma_runs([s for s, _ in sers], [th for _, th in sers]), dpi=80)
+        held = held_series(by_h.get(6.0, []), "f0", PAPER_TCON_ANGLE_H6)
+        if held:
+            figs.fig_sigma(out("tcon_hold_sigma_H6.png"),
+                           figs.sigma_runs(held, [PAPER_TCON_ANGLE_H6] * len(held)), dpi=80)
+    for name, rows in data["kappa_tables"].items():
+        figs.fig_kappa(out("kappa_shift" + name[len("kappa"):] + ".png"),
+                       [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in rows], dpi=80)
+    return written
 
 
 def held_series(packs, tag, theta):
     """The series of each packing's t_con run at theta with the longest hold
-    of the uniform criterion (AVALANCHE_TUNIFORM), where it is there: the
-    run followed longest after its flow first became uniform."""
+    of the uniform criterion (setting tuniform), where it is there: the run
+    followed longest after its flow first became uniform."""
     paths = []
     for p in packs:
-        runs = sorted((h, run) for h, th, _, run in p[f"tcon_{tag}_held"] if th == theta)
-        path = os.path.join(p["path"], f"{runs[-1][1]}.series") if runs else ""
+        runs = sorted((h, run_dir, run_tag) for h, th, _, run_dir, run_tag in p[f"tcon_{tag}_held"] if th == theta)
+        path = os.path.join(runs[-1][1], f"{runs[-1][2]}.series") if runs else ""
         if os.path.exists(path):
             paths.append(path)
     return paths
@@ -592,22 +714,6 @@ def print_kappa(rows, label):
     print("|---|---|---|---|---|---|---|---|")
     for k, H, seed, t0, t70, shift, mu, onset_shift in rows:
         print(f"| {k:g} | {H:g} | {seed} | {t0:g}° | {t70:g}° | {shift:g}° | {mu:.3f} | {onset_shift:g}° |")
-
-
-def kappa_figure(rows, kset, top, figdir):
-    """The table OUT/<kset>.txt and the figure kappa_shift<suffix>.png of one
-    kappa_scale study (rows of kappa_study; suffix "" for kappa, "_free" for
-    kappa_free): one figure per study, so that a record holding one of them
-    redraws it without touching the other's."""
-    if not rows:
-        return
-    geometry = KAPPA_SETS[kset][1].replace(" ", "_")
-    with open(os.path.join(top, f"{kset}.txt"), "w") as f:
-        for k, H, seed, t0, t70, shift, mu, onset_shift in rows:
-            f.write(f"{k:g} {H:g} {seed} {shift:g} {mu:g} {onset_shift:g} {geometry}\n")
-    name = "kappa_shift" + kset[len("kappa"):] + ".png"
-    figs.fig_kappa(os.path.join(figdir, name),
-                   [(k, H, shift, mu, onset_shift, geometry) for k, H, _, _, _, shift, mu, onset_shift in rows], dpi=80)
 
 
 def print_switch_on(rows):
@@ -649,23 +755,12 @@ def print_other_frequencies(by_h):
               f"first spreading flow {num(p['f0_onset'])} / {num(p['f70_onset'])}°")
 
 
-def collect(top, figdir):
-    """Everything of collect.py: the tables of every geometry and study on
-    stdout, the figures into figdir, their tables and summary.json (the rows
-    and slopes of each geometry) into top."""
-    all_ens = ensembles(top)
-    summary = {label: summarise(by_h) for label, by_h in all_ens.items()}
-    print_tables(all_ens, summary)
-    kappa_rows = {kset: kappa_study(top, kset) for kset in KAPPA_SETS}
-    for kset, rows in kappa_rows.items():
-        print_kappa(rows, KAPPA_SETS[kset][1])
-    switch_on = switch_on_study(top)
-    print_switch_on(switch_on)
-    couplings = coupling_summary(switch_on)
-    print_couplings(couplings)
-    figures(all_ens, summary, top, figdir, couplings)
-    for kset, rows in kappa_rows.items():
-        kappa_figure(rows, kset, top, figdir)
-    with open(os.path.join(top, "summary.json"), "w") as f:
-        json.dump({label: {"rows": rows, "slope0": s0, "slope70": s70} for label, (rows, s0, s70) in summary.items()},
-                  f, indent=1, default=float)
+def collect(top, tables):
+    """The tables of the jobs in top (write_tables) into the directory
+    tables; returns the markdown."""
+    return write_tables(study_data(top), tables)
+
+
+def figures(top, figdir):
+    """The figures of the jobs in top (draw_figures) into figdir."""
+    return draw_figures(study_data(top), figdir)

@@ -1,0 +1,612 @@
+"""The avalanche study of examples/avalanche (paper 000) as jobs, and its
+command line (examples/avalanche/study.py; acoustic_tools.study's layout).
+
+A job is one LAMMPS run in a directory of its own, named by job_name (the
+name is for people: nothing reads it back), with its settings in job.json,
+written before LAMMPS starts, and what the deck measured in result.json,
+written by the deck at its end (the run adds LAMMPS's total wall time to it):
+
+  deposit  in.deposit: a layer of H/d on its base (free ends, `layer` d
+           long on a base 100 d longer, or periodic), with one seed
+  ramp     in.avalanche: the tilt ramp of a packing at one frequency, from
+           its deposit (or, with switch_on, from a tilt at rest without
+           ultrasound to that angle: quiet.json beside result.json)
+  tcon     in.avalanche: one angle above theta_m, from the last static
+           state of a ramp (paper 000's Fig. 8); tuniform: a longer hold of
+           the uniform criterion
+
+A ramp runs as pieces, each a LAMMPS process that pauses after the angle
+that ends `piece` simulated seconds after its start; the next piece goes on
+from the last whole angle (in.avalanche's TAG.resume), and a piece that was
+killed loses what it wrote after that angle (cut_after).  A finished job is
+skipped, so the production is resumed by repeating the command.
+
+  Settings, job_name, deposit_settings, ramp_settings, tcon_settings
+                        the settings of each kind of job and its name
+  Runner                runs the jobs (mpirun, pieces, the deposit first)
+  PRODUCTION            the sets behind RESULTS.md, as lists of jobs
+  record                job.json and result.json of the finished jobs into record/
+  main                  the command line: run, job, demo, collect, figures, record, calibrate
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+from . import study
+from .lammps_log import wall_time
+
+HERE = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "avalanche"))
+MARGIN = 50               # d of bare base on each side of a free-ends layer
+KAPPA = 0.3               # kappa_scale of the ensembles (RESULTS.md)
+SEEDS = (4871, 1, 2, 3)   # the packings of the periodic set
+
+
+def _g(x):
+    return f"{float(x):g}"
+
+
+def packing_settings(H, seed, free=1, layer=None, Edem=None, rest=None):
+    """The settings that name a packing (acoustic_tools.avalanche_collect.packing_key)."""
+    layer = layer if layer is not None else (400 if free else 80)
+    return {"H": float(H), "seed": int(seed), "free": int(free), "layer": float(layer),
+            "Edem": None if Edem is None else float(Edem), "rest": None if rest is None else float(rest)}
+
+
+def packing_name(s):
+    name = (f"free{_g(s['layer'])}" if s["free"] else f"periodic{_g(s['layer'])}")
+    name += f"_E{_g(s['Edem'])}" if s.get("Edem") is not None else ""
+    name += f"_e{_g(s['rest'])}" if s.get("rest") is not None else ""
+    return f"{name}_H{_g(s['H'])}_s{s['seed']}"
+
+
+def job_name(s):
+    """The directory name of a job (readable; never parsed)."""
+    name = packing_name(s) + "_" + ("deposit" if s["kind"] == "deposit" else s["tag"])
+    if s["kind"] != "deposit" and float(s.get("kappa", KAPPA)) != KAPPA:
+        name += f"_k{_g(s['kappa'])}"
+    if s.get("switch_on") is not None:
+        name += f"_on{_g(s['switch_on'])}"
+    return name
+
+
+def geometry_variables(s):
+    """-var values of the geometry: base length L, covered span and the
+    observation window (the middle half of a free-ends layer)."""
+    if s["free"]:
+        L = s["layer"] + 2 * MARGIN
+        lo = (L - s["layer"] / 2) / (2 * L)
+        return {"L": _g(L), "span": f"{s['layer'] / L:.6f}", "obslo": f"{lo:.6f}", "obshi": f"{1 - lo:.6f}"}
+    return {"L": _g(s["layer"]), "span": "1", "obslo": "0", "obshi": "1"}
+
+
+def deposit_settings(packing):
+    s = dict(packing, kind="deposit")
+    return s
+
+
+def ramp_settings(packing, freq, kappa=KAPPA, source="bottom", theta0=None, tfollow=1.2, tsettle=0.5,
+                  switch_on=None, piece="auto", dumpevery=50, dumplocal=1):
+    """A tilt ramp of a packing at freq Hz; theta0 by default 10 deg, 4 deg
+    for H > 10 d at 70 kHz (a thick layer creeps and flows low)."""
+    freq = float(freq)
+    if theta0 is None:
+        theta0 = 4.0 if packing["H"] > 10 and freq > 0 else 10.0
+    s = dict(packing, kind="ramp", tag=f"f{_g(freq / 1e3)}", freq=freq, kappa=float(kappa), source=source,
+             theta0=float(theta0), tfollow=float(tfollow), tsettle=float(tsettle), thetamax=30.0,
+             switch_on=None if switch_on is None else float(switch_on), piece=piece,
+             dumpevery=dumpevery, dumplocal=dumplocal)
+    s["deposit"] = job_name(deposit_settings(packing))
+    return s
+
+
+def tcon_settings(ramp, theta, tuniform=None):
+    """One angle theta above the theta_m of a ramp (its settings), from its
+    last static state, followed like any angle of the ramp."""
+    tag = f"tcon_{ramp['tag']}_{theta:.1f}" + (f"_u{_g(tuniform)}" if tuniform is not None else "")
+    s = {k: ramp[k] for k in ("H", "seed", "free", "layer", "Edem", "rest", "freq", "kappa", "source", "tfollow",
+                              "deposit")}
+    s.update(kind="tcon", tag=tag, ramp_tag=ramp["tag"], ramp=job_name(ramp), theta=float(f"{theta:.1f}"),
+             tuniform=None if tuniform is None else float(tuniform), switch_on=None)
+    return s
+
+
+def read_resume(path):
+    """The resume line of in.avalanche: (theta, time, step, restart, next theta, carry file)."""
+    words = open(path).read().split()
+    return float(words[0]), float(words[1]), int(words[2]), words[3], words[4], words[5]
+
+
+def cut_after(directory, tag, t, theta, step):
+    """Drop what a killed piece wrote after the last whole angle (theta,
+    ended at time t and step): the series lines after it (the one of that
+    angle's last step stays) and the dump frames after that step."""
+    series = os.path.join(directory, f"{tag}.series")
+    if os.path.exists(series):
+        keep = []
+        for line in open(series):
+            if line.startswith("#"):
+                keep.append(line)
+                continue
+            words = line.split()
+            when, angle = float(words[0]), float(words[1])
+            if when < t - 5e-5 or (when < t + 5e-5 and angle == theta):
+                keep.append(line)
+        with open(series, "w") as f:
+            f.writelines(keep)
+    for name in (f"{tag}.dump", f"{tag}.contacts"):
+        path = os.path.join(directory, name)
+        if not os.path.exists(path):
+            continue
+        lines, keep, on = open(path).read().split("\n"), [], True
+        k = 0
+        while k < len(lines):
+            if lines[k].startswith("ITEM: TIMESTEP"):
+                on = int(lines[k + 1]) <= step
+                if on:
+                    keep += lines[k:k + 2]
+                k += 2
+                continue
+            if on:
+                keep.append(lines[k])
+            k += 1
+        with open(path, "w") as f:
+            f.write("\n".join(keep))
+
+
+class Runner:
+    """Runs jobs under out with the lmp of build on np MPI ranks; say()
+    prints what it does."""
+
+    def __init__(self, build, out, np=2, say=print, max_pieces=None, progress=None):
+        self.lmp = os.path.join(os.path.abspath(build), "lammps", "lmp")
+        if not os.access(self.lmp, os.X_OK):
+            sys.exit(f"avalanche: no LAMMPS executable at {self.lmp} (build first: ./run.sh build)")
+        self.out, self.np, self.say, self.max_pieces, self.progress = os.path.abspath(out), np, say, max_pieces, progress
+        self.mpi = ["mpirun", "-np", str(np)]
+        version = subprocess.run(["mpirun", "--version"], capture_output=True, text=True).stdout
+        if "Open MPI" in version:
+            self.mpi.append("--oversubscribe")
+        self.env = dict(os.environ)
+        if os.geteuid() == 0:
+            self.env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+    def lammps(self, directory, deck, variables, log, contact=None):
+        """One LAMMPS process in directory; returns its wall time (s)."""
+        args = [*self.mpi, self.lmp, "-nocite", "-echo", "none", "-screen", "none", "-in", os.path.join(HERE, deck),
+                "-var", "dir", HERE]
+        for name, value in list((contact or {}).items()) + list(variables.items()):
+            args += ["-var", name, str(value)]
+        args += ["-log", log]
+        start = time.monotonic()
+        process = subprocess.Popen(args, cwd=directory, env=self.env, stdout=subprocess.DEVNULL)
+        if self.progress:
+            self.progress(os.path.join(directory, log), process)
+        process.wait()
+        return time.monotonic() - start
+
+    def directory(self, s):
+        return os.path.join(self.out, job_name(s))
+
+    def finished(self, s):
+        return study.read_result(self.directory(s)) is not None
+
+    @staticmethod
+    def contact(s):
+        law = {}
+        if s.get("Edem") is not None:
+            law["Edem"] = _g(s["Edem"])
+        if s.get("rest") is not None:
+            law["rest"] = _g(s["rest"])
+        return law
+
+    def finish(self, directory, logs):
+        """Add LAMMPS's total wall time of the job's logs to its result.json."""
+        result = study.read_result(directory)
+        result["wall_time"] = sum(wall_time(os.path.join(directory, log)) for log in logs
+                                  if os.path.exists(os.path.join(directory, log)))
+        path = os.path.join(directory, study.RESULT)
+        with open(path + ".part", "w") as f:
+            json.dump(result, f, indent=1)
+            f.write("\n")
+        os.replace(path + ".part", path)
+        return result
+
+    def deposit(self, s):
+        d = self.directory(s)
+        if self.finished(s):
+            return d
+        study.write_job(d, s)
+        geometry = geometry_variables(s)
+        self.lammps(d, "in.deposit", {"H": _g(s["H"]), "L": geometry["L"], "free": s["free"], "span": geometry["span"],
+                                      "seed": s["seed"], "out": "deposit.restart"}, "log.deposit", self.contact(s))
+        r = study.read_result(d)
+        if r is None:
+            sys.exit(f"avalanche: the deposit {d} failed (log.deposit)")
+        self.finish(d, ["log.deposit"])
+        self.say(f"{job_name(s)}: {r['grains']} grains on {r['base']}, H = {r['H_measured']} d")
+        return d
+
+    def ramp(self, s):
+        """A ramp, piece after piece; returns its result (None if it paused)."""
+        d = self.directory(s)
+        name, tag = job_name(s), s["tag"]
+        if self.finished(s):
+            self.say(f"{name}: done before, skipped")
+            return study.read_result(d)
+        deposit = self.deposit(deposit_settings({k: s[k] for k in ("H", "seed", "free", "layer", "Edem", "rest")}))
+        study.write_job(d, s)
+        geometry = geometry_variables(s)
+        piece = s["piece"]
+        if piece == "auto":
+            r = study.read_result(deposit)
+            piece = f"{20000 / (r['grains'] + r['base']):.1f}"
+        common = {"tag": tag, "freq": _g(s["freq"]), "kappa": _g(s["kappa"]), "source": s["source"],
+                  "tfollow": _g(s["tfollow"]), "tsettle": _g(s["tsettle"]), "thetamax": _g(s["thetamax"]),
+                  "obslo": geometry["obslo"], "obshi": geometry["obshi"], "dumpevery": s["dumpevery"],
+                  "dumplocal": s["dumplocal"], "tpiece": piece}
+        restart = os.path.relpath(os.path.join(deposit, "deposit.restart"), d)
+        pieces = 0
+        while study.read_result(d) is None:
+            if self.max_pieces is not None and pieces >= self.max_pieces:
+                theta = read_resume(os.path.join(d, f"{tag}.resume"))[0]
+                self.say(f"{name}: paused after {pieces} piece(s), at {theta:.2f} deg; repeat the command to go on")
+                return None
+            resume = os.path.join(d, f"{tag}.resume")
+            if os.path.exists(os.path.join(d, f"log.{tag}")) and os.path.exists(resume):
+                theta, t, step, last, following, carry = read_resume(resume)
+                cut_after(d, tag, t, theta, step)
+                self.lammps(d, "in.avalanche", dict(common, restart=last, pre=0, theta0=following, append=1,
+                                                    carry=carry), f"log.{tag}.resume", self.contact(s))
+            else:
+                start = {"restart": restart, "theta0": _g(s["theta0"])}
+                if s.get("switch_on") is not None and s["freq"] > 0:
+                    start = self.quiet(s, d, restart, geometry)
+                self.lammps(d, "in.avalanche", dict(common, **start), f"log.{tag}", self.contact(s))
+            pieces += 1
+            if study.read_result(d) is None and not os.path.exists(resume):
+                sys.exit(f"avalanche: {name} stopped without a result or a resume file (log.{tag})")
+        result = self.finish(d, [f"log.{tag}"])
+        self.say(f"{name}: theta_m = {result['theta_m']} deg  t_con = {result['t_con']} s  wall {result['wall_time']:.0f} s")
+        return result
+
+    def quiet(self, s, d, restart, geometry):
+        """The tilt at rest without ultrasound to switch_on (quiet.json); the
+        ramp goes on from its state 0.5 deg higher with ultrasound."""
+        on = s["switch_on"]
+        self.lammps(d, "in.avalanche", {"tag": "quiet", "freq": 0, "kappa": _g(s["kappa"]), "source": s["source"],
+                                        "tsettle": _g(s["tsettle"]), "obslo": geometry["obslo"],
+                                        "obshi": geometry["obshi"], "dumpevery": 0, "restart": restart,
+                                        "theta0": _g(on), "thetamax": _g(on), "resultfile": "quiet.json"},
+                    "log.quiet", self.contact(s))
+        with open(os.path.join(d, "quiet.json")) as f:
+            quiet = json.load(f)
+        if not any(a["theta"] == on and a["state"] in ("stable", "stopped") for a in quiet["angles"]):
+            sys.exit(f"avalanche: {job_name(s)}: the layer is not at rest at {on:g} deg without ultrasound "
+                     "(quiet.json); switch_on must lie below theta_m at 0 Hz")
+        return {"restart": "quiet.static.restart", "pre": 0, "theta0": f"{on + 0.5:.2f}"}
+
+    def tcon(self, ramp, steps=(1, 2, 3), angles=(), tuniform=None):
+        """The t_con runs of a finished ramp at theta_m + steps and at the
+        angles above theta_m."""
+        r = study.read_result(self.directory(ramp))
+        if r is None or r.get("theta_m") is None:
+            self.say(f"{job_name(ramp)}: no theta_m yet (run the ramp first), t_con runs skipped")
+            return []
+        tm = r["theta_m"]
+        thetas = [float(f"{tm + step:.1f}") for step in steps] + [a for a in angles if a > tm + 1e-6]
+        results = []
+        for theta in thetas:
+            s = tcon_settings(ramp, theta, tuniform)
+            d = self.directory(s)
+            if not self.finished(s):
+                study.write_job(d, s)
+                restart = os.path.relpath(os.path.join(self.directory(ramp), f"{ramp['tag']}.static.restart"), d)
+                variables = {"restart": restart, "pre": 0, "tag": s["tag"], "freq": _g(s["freq"]),
+                             "kappa": _g(s["kappa"]), "source": s["source"], "theta0": f"{theta:.1f}",
+                             "thetamax": f"{theta:.1f}", "tfollow": _g(s["tfollow"]),
+                             "obslo": geometry_variables(s)["obslo"], "obshi": geometry_variables(s)["obshi"],
+                             "dumpevery": 0}
+                if tuniform is not None:
+                    variables["tuniform"] = _g(tuniform)
+                self.lammps(d, "in.avalanche", variables, f"log.{s['tag']}", self.contact(s))
+                if study.read_result(d) is None:
+                    sys.exit(f"avalanche: {job_name(s)} failed (log.{s['tag']})")
+                res = self.finish(d, [f"log.{s['tag']}"])
+                self.say(f"{job_name(s)}: theta_m = {res['theta_m']} deg  t_con = {res['t_con']} s")
+            results.append(study.read_result(d))
+        return results
+
+
+# The production behind RESULTS.md: each set a list of (what, arguments) in
+# the order they run; "ramp" takes ramp_settings' arguments, "tcon" a ramp's
+# and Runner.tcon's.
+def _periodic(H, seed, layer):
+    return packing_settings(H, seed, free=0, layer=layer)
+
+
+def production(name):
+    """The jobs of one production set: [("ramp", settings) or ("tcon", (ramp settings, options))]."""
+    jobs = []
+    if name == "periodic":
+        for s in SEEDS:
+            jobs += [("ramp", ramp_settings(_periodic(6, s, 80), f)) for f in (0, 70e3)]
+            jobs += [("ramp", ramp_settings(_periodic(14.4, s, 40), 0)),
+                     ("ramp", ramp_settings(_periodic(14.4, s, 40), 70e3, theta0=6))]
+            jobs += [("ramp", ramp_settings(_periodic(3, s, 80), f)) for f in (0, 70e3)]
+    elif name == "tcon":
+        for s in SEEDS:
+            jobs += [("tcon", (ramp_settings(_periodic(6, s, 80), f), {"angles": (19.0,)})) for f in (0, 70e3)]
+        for s in (1, 2, 3, 4):
+            jobs += [("tcon", (ramp_settings(packing_settings(6, s), f), {"steps": (1,), "angles": (19.0,)}))
+                     for f in (0, 70e3)]
+        for s in SEEDS:
+            jobs += [("tcon", (ramp_settings(_periodic(14.4, s, 40), f, theta0=6 if f else None), {}))
+                     for f in (0, 70e3)]
+        for H in (11.4, 14.4):
+            for s in (1, 2, 3, 4):
+                jobs += [("tcon", (ramp_settings(packing_settings(H, s), f), {})) for f in (0, 70e3)]
+    elif name == "free":
+        for f in (0, 70e3):
+            for H in (3, 6, 14.4, 8.7, 11.4):
+                jobs += [("ramp", ramp_settings(packing_settings(H, s), f)) for s in (1, 2, 3, 4)]
+    elif name == "more":
+        for H in (8.7, 11.4):
+            for s in SEEDS:
+                jobs += [("ramp", ramp_settings(_periodic(H, s, 40), 0)),
+                         ("ramp", ramp_settings(_periodic(H, s, 40), 70e3, theta0=6))]
+    elif name == "kappa":
+        for s in (1, 2):
+            jobs += [("ramp", ramp_settings(_periodic(6, s, 80), 70e3, kappa=k)) for k in (0.1, 0.2, 1)]
+    elif name == "kappa_free":
+        jobs += [("ramp", ramp_settings(packing_settings(8.7, s), 70e3, kappa=k)) for s in (1, 2) for k in (0.1, 0.2)]
+        jobs += [("ramp", ramp_settings(packing_settings(8.7, s), 70e3, kappa=0.1)) for s in (3, 4)]
+    elif name == "switch_on":
+        jobs += [("ramp", ramp_settings(packing_settings(14.4, s), 70e3, switch_on=9.5)) for s in (1, 2, 3, 4)]
+        jobs += [("ramp", ramp_settings(packing_settings(14.4, s), 70e3, kappa=0.17, switch_on=10.5)) for s in (1, 3)]
+        jobs += [("ramp", ramp_settings(packing_settings(6, s), 70e3, kappa=0.17, switch_on=13)) for s in (1, 2, 3, 4)]
+        jobs += [("ramp", ramp_settings(packing_settings(14.4, s), 70e3, kappa=0.17, switch_on=10.5)) for s in (2, 4)]
+    else:
+        raise ValueError(f"unknown production set {name}")
+    return jobs
+
+
+PRODUCTION = ("periodic", "tcon", "free", "more", "kappa", "kappa_free", "switch_on")
+
+
+def record(out, dest):
+    """Copy job.json and result.json of every finished job in out into
+    dest/<job>/ (a job present in both is written again from out; one
+    recorded earlier and absent from out is kept); returns the number of
+    jobs written."""
+    written = 0
+    for directory, _, _ in study.finished_jobs(out):
+        target = os.path.join(dest, os.path.basename(directory))
+        os.makedirs(target, exist_ok=True)
+        for name in (study.JOB, study.RESULT, "quiet.json"):
+            if os.path.exists(os.path.join(directory, name)):
+                shutil.copyfile(os.path.join(directory, name), os.path.join(target, name))
+        written += 1
+    return written
+
+
+# ---------------------------------------------------------------- command line
+
+BUILD = os.path.normpath(os.path.join(HERE, "..", "..", "build"))
+OUT = os.path.join(HERE, "out", "production")
+RECORD = os.path.join(HERE, "record")
+
+
+def _runner_options(parser, out=OUT):
+    parser.add_argument("--build", default=BUILD, help="the build directory of ./run.sh (default: build/)")
+    parser.add_argument("--out", default=out, help=f"the job directories (default: {os.path.relpath(out)})")
+    parser.add_argument("--np", type=int, default=2, help="MPI ranks (default 2)")
+    parser.add_argument("--max-pieces", type=int, help="processes per ramp in one call (default: until it ends)")
+
+
+def _run(args):
+    runner = Runner(args.build, args.out, args.np, max_pieces=args.max_pieces)
+    unknown = [name for name in args.sets if name not in PRODUCTION]
+    if unknown:
+        sys.exit(f"run: unknown set {unknown[0]} ({', '.join(PRODUCTION)})")
+    for name in args.sets or ["periodic"]:
+        for what, job in production(name):
+            if what == "ramp":
+                runner.ramp(job)
+            else:
+                ramp, options = job
+                runner.tcon(ramp, **options)
+    return 0
+
+
+def _run_arguments(p):
+    p.add_argument("sets", nargs="*", metavar="SET",
+                   help="periodic (default), tcon, free, more, kappa, kappa_free, switch_on "
+                        "(examples/avalanche/README.md)")
+    _runner_options(p)
+
+
+def _job_arguments(p):
+    p.add_argument("H", type=float, help="layer thickness / d")
+    p.add_argument("seed", type=int)
+    p.add_argument("freq", type=float, help="drive frequency (Hz; 0: no ultrasound)")
+    _runner_options(p)
+    p.add_argument("--periodic", action="store_true", help="a periodic layer (default: free ends)")
+    p.add_argument("--layer", type=float, help="layer length / d (default 400 with free ends, 80 periodic)")
+    p.add_argument("--edem", type=float, help="Young's modulus of the grains (Pa; default in.material's)")
+    p.add_argument("--rest", type=float, help="restitution (default in.material's)")
+    p.add_argument("--kappa", type=float, default=KAPPA, help=f"kappa_scale (default {KAPPA})")
+    p.add_argument("--source", choices=("bottom", "base"), default="bottom")
+    p.add_argument("--theta0", type=float, help="first angle (default 10, 4 for H > 10 d at 70 kHz)")
+    p.add_argument("--tfollow", type=float, default=1.2)
+    p.add_argument("--tsettle", type=float, default=0.5)
+    p.add_argument("--switch-on", type=float, help="tilt at rest without ultrasound to this angle first")
+    p.add_argument("--piece", default="auto", help="simulated s per process (auto: 20000 / atoms; 0: one process)")
+    p.add_argument("--tcon", action="store_true", help="the t_con runs of the finished ramp instead of the ramp")
+    p.add_argument("--tcon-steps", type=float, nargs="*", default=[1, 2, 3], help="deg above theta_m (default 1 2 3)")
+    p.add_argument("--tcon-angles", type=float, nargs="*", default=[], help="angles above theta_m")
+    p.add_argument("--tuniform", type=float, help="s the sigma criteria must hold in the t_con runs")
+
+
+def _job(args):
+    packing = packing_settings(args.H, args.seed, free=0 if args.periodic else 1, layer=args.layer, Edem=args.edem,
+                               rest=args.rest)
+    ramp = ramp_settings(packing, args.freq, kappa=args.kappa, source=args.source, theta0=args.theta0,
+                         tfollow=args.tfollow, tsettle=args.tsettle, switch_on=args.switch_on, piece=args.piece)
+    runner = Runner(args.build, args.out, args.np, max_pieces=args.max_pieces)
+    if args.tcon:
+        runner.tcon(ramp, args.tcon_steps, args.tcon_angles, args.tuniform)
+    else:
+        runner.ramp(ramp)
+    return 0
+
+
+def _demo_arguments(p):
+    p.add_argument("--build", default=BUILD)
+    p.add_argument("--out", default=os.path.join(HERE, "out", "demo"))
+    p.add_argument("--np", type=int, default=2)
+    p.add_argument("--H", type=float, default=6)
+    p.add_argument("--L", type=float, default=80)
+    p.add_argument("--theta0", type=float, default=10)
+    p.add_argument("--source", choices=("bottom", "base"), default="bottom")
+    p.add_argument("--tfollow", type=float, default=0.3, help="s (0.3: the demo stays at about 2 minutes; "
+                                                              "paper 000's is 1.2)")
+    p.add_argument("--tsettle", type=float, default=0.2)
+    p.add_argument("--seed", type=int, default=4871)
+
+
+def _demo(args):
+    """The main job: a periodic layer, the ramp at 0 and at 70 kHz, progress
+    lines as they come, theta_m at the end."""
+    start = time.monotonic()
+
+    def stamp(line):
+        print(f"[{time.monotonic() - start:4.0f}s] {line}", flush=True)
+
+    def progress(log, process):
+        offset = 0
+        while True:
+            done = process.poll() is not None
+            if os.path.exists(log):
+                with open(log) as f:
+                    f.seek(offset)
+                    text = f.read()
+                    cut = text.rfind("\n") + 1
+                    offset += len(text[:cut].encode())
+                for line in text[:cut].splitlines():
+                    if line.startswith(("angle", "avalanche", "deposit:")):
+                        stamp(line)
+            if done:
+                return
+            time.sleep(0.5)
+
+    out = os.path.abspath(args.out)
+    print(f"avalanche demo: H = {args.H:g} d, L = {args.L:g} d, periodic, source {args.source}, {args.np} MPI ranks, "
+          f"outputs in {out}", flush=True)
+    runner = Runner(args.build, out, args.np, say=lambda line: None, progress=progress)
+    packing = packing_settings(args.H, args.seed, free=0, layer=args.L)
+    results = []
+    for freq in (0, 70e3):
+        s = ramp_settings(packing, freq, source=args.source, theta0=args.theta0, tfollow=args.tfollow,
+                          tsettle=args.tsettle, piece=0, dumpevery=20)
+        d = runner.directory(s)
+        if os.path.exists(d):
+            shutil.rmtree(d)          # the demo runs anew
+        if freq == 0 and os.path.exists(runner.directory(deposit_settings(packing))):
+            shutil.rmtree(runner.directory(deposit_settings(packing)))
+        results.append((s, runner.ramp(s)))
+    print()
+    for s, r in results:
+        print(f"result (H = {args.H:g} d): {s['tag']}: freq {_g(s['freq'])} Hz  theta_m = "
+              f"{r['theta_m'] if r['theta_m'] is not None else 'none'} deg  t_con = {r['t_con']} s")
+    a0, a70 = (r["theta_m"] for _, r in results)
+    print(f"theta_m without ultrasound: {a0 if a0 is not None else 'none'} deg; with 70 kHz: "
+          f"{a70 if a70 is not None else 'none'} deg (paper 000: about 2 deg lower with 70 kHz)")
+    print(f"wall time {time.monotonic() - start:.0f} s; job directories (logs, series, dumps) in {out}")
+    return 0
+
+
+def _collect_arguments(p):
+    p.add_argument("--jobs", default=OUT, help="the job directories (default: the production's; "
+                                               "examples/avalanche/record for the record)")
+    p.add_argument("--tables", default=os.path.join(HERE, "out", "tables"),
+                   help="where tables.md, summary.json and the figures' tables go (default out/tables)")
+
+
+def _collect(args):
+    from .avalanche_collect import collect
+    sys.stdout.write(collect(args.jobs, args.tables))
+    return 0
+
+
+def _figures_arguments(p):
+    p.add_argument("--jobs", default=OUT)
+    p.add_argument("--figures", default=os.path.join(HERE, "figures"),
+                   help="where the PNGs go (default examples/avalanche/figures; give another one for the record)")
+
+
+def _figures(args):
+    from .avalanche_collect import figures
+    figures(args.jobs, args.figures)
+    return 0
+
+
+def _record_arguments(p):
+    p.add_argument("--jobs", default=OUT)
+    p.add_argument("--record", default=RECORD)
+
+
+def _record(args):
+    if not os.path.isdir(args.jobs):
+        sys.exit(f"record: no production outputs in {args.jobs} (run the production first)")
+    print(f"record: {record(args.jobs, args.record)} jobs from {args.jobs} written to {args.record}")
+    return 0
+
+
+def _calibrate_arguments(p):
+    from .avalanche_calibration import SCANS, SOURCES
+    p.add_argument("restart")
+    p.add_argument("output")
+    p.add_argument("--freq", type=float, default=70e3)
+    p.add_argument("--quick", action="store_true", help="two values per scan (tests)")
+    p.add_argument("--scan", choices=sorted(SCANS), help="this parameter only")
+    p.add_argument("--values", type=float, nargs="+", help="its values (with --scan)")
+    p.add_argument("--sources", choices=SOURCES, nargs="+", default=list(SOURCES))
+    p.add_argument("--no-spectrum", action="store_true",
+                   help="no eigenmodes and pulse (dense: too costly for thousands of grains)")
+
+
+def _calibrate(args):
+    from .avalanche_calibration import SCANS, calibration_scan
+    if args.values and not args.scan:
+        sys.exit("calibrate: --values needs --scan")
+    scans = {k: (v[::len(v) - 1] if args.quick else v) for k, v in SCANS.items() if args.scan in (None, k)}
+    if args.values:
+        scans[args.scan] = args.values
+    results = calibration_scan(os.path.abspath(args.restart), os.path.join(HERE, "in.material"), args.freq, scans,
+                               args.sources, spectrum=not args.no_spectrum)
+    with open(args.output, "w") as handle:
+        json.dump(results, handle, indent=1)
+    return 0
+
+
+COMMANDS = {
+    "run": (_run, "the production jobs behind RESULTS.md, set by set; resumable: repeat until all are there",
+            _run_arguments),
+    "job": (_job, "one ramp of one packing at one frequency (or, with --tcon, its t_con runs)", _job_arguments),
+    "demo": (_demo, "the main job (./run.sh demo): H = 6 d, 80 d, periodic, 0 and 70 kHz", _demo_arguments),
+    "collect": (_collect, "the tables: tables.md (also on stdout), summary.json, the figures' tables",
+                _collect_arguments),
+    "figures": (_figures, "the PNG figures of the jobs", _figures_arguments),
+    "record": (_record, "job.json and result.json of the finished jobs into record/ (committed)", _record_arguments),
+    "calibrate": (_calibrate, "the calibration scan of a frozen layer through LAMMPS's Python module (JSON; "
+                              "python3 -m acoustic_tools.avalanche_figures calibration draws it)",
+                  _calibrate_arguments),
+}
+
+
+def main(argv=None):
+    return study.main("The avalanche study of examples/avalanche (paper 000): run -> collect -> figures.",
+                      COMMANDS, argv)
