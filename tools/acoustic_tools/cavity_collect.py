@@ -1,24 +1,23 @@
-"""Collect the cavity runs of examples/cavity/run_scan.sh (OUT/<set>/<tag>/:
-scan, paper, size, us; each with cavity.params, cavity.wall.txt,
-cavity.contacts, cavity.flow and log.lammps) into the tables and figures of
-its RESULTS.md; examples/cavity/collect.py is the command line.
+"""Collect the cavity runs of examples/cavity/study.py run (OUT/<set>/<name>/:
+sets scan, paper, size, us; each with job.json (set, name, the deck's
+variables, tag), the result.json that in.cavity writes at its end (the run's
+parameters, wall_seconds) and the recordings TAG.wall.txt, TAG.contacts,
+TAG.flow, TAG.us.txt) into the tables and figures of its RESULTS.md
+(acoustic_tools.cavity_study is the command line).
 
   analyse, read_runs, block_error   the measurements of each run (cavity)
   scan_fit                          the Eq. 4 fit of the scan set
   print_tables                      the markdown tables on stdout
   figures                           the figures (cavity_figures)
-  collect                           what collect.py does
+  collect, draw                     what study.py collect and study.py figures do
 """
-import glob
 import json
 import os
 
 import numpy as np
 
-from . import cavity, lammps_output
+from . import cavity, lammps_output, study
 from . import cavity_figures as figs
-from .lammps_log import wall_time
-from .lammps_output import read_key_values
 
 
 def block_error(series, blocks=20):
@@ -29,17 +28,15 @@ def block_error(series, blocks=20):
     return float(means.std(ddof=1) / np.sqrt(blocks))
 
 
-def analyse(run):
-    """The measurements of one run directory (None if it did not finish):
-    (the row of summary.json: I_M, F/(PLd) and its block error, ell/L, Phi*,
-    the correlation times, the Eq. 7 fits at the three scales, ..., the data
-    of the figures: the wall force and its portions, the contact forces,
-    the autocorrelations, the mean velocity field)."""
-    log = os.path.join(run, "log.lammps")
-    if not os.path.exists(log) or "cavity result" not in open(log).read():
-        return None
-    p = read_key_values(os.path.join(run, "cavity.params"))
-    wall = lammps_output.read_ave_time(os.path.join(run, "cavity.wall.txt"))
+def analyse(run, settings, p):
+    """The measurements of one finished run in directory run (settings: its
+    job.json, p: its result.json): (the row of summary.json: I_M, F/(PLd)
+    and its block error, ell/L, Phi*, the correlation times, the Eq. 7 fits
+    at the three scales, ..., the data of the figures: the wall force and
+    its portions, the contact forces, the autocorrelations, the mean
+    velocity field)."""
+    tag = settings.get("tag", "cavity")
+    wall = lammps_output.read_ave_time(os.path.join(run, f"{tag}.wall.txt"))
     F = wall["F"]
     portions = np.column_stack([wall[f"F_{i}"] for i in range(1, 11)])
     PLd = p["P"] * p["L"] * p["d"]
@@ -49,10 +46,10 @@ def analyse(run):
     C = cavity.autocorrelation(F, max_lag)
     C_portions = np.array([cavity.autocorrelation(portions[:, i], max_lag) for i in range(10)])
     dtc_portions, dtc_mean = cavity.portion_correlation_times(portions, dt_rec, max_lag)
-    r = {"run": os.path.relpath(run, os.path.dirname(os.path.dirname(run))), "I_M": p["I_M"], "NP": p["NP"],
+    r = {"run": f"{settings['set']}/{settings['name']}", "I_M": p["I_M"], "NP": p["NP"],
          "NU": p["NU"], "Hd": p["Hd"], "freq": p["freq"], "grains": int(p["grains"]), "records": len(F),
          "recorded_HU": (p["nshear"] - p["nskip"]) * p["dt"] * p["U"] / p["H"],
-         "recorded_s": (p["nshear"] - p["nskip"]) * p["dt"], "wall_s": wall_time(log),
+         "recorded_s": (p["nshear"] - p["nskip"]) * p["dt"], "wall_s": p["wall_seconds"],
          "Fnorm": float(F.mean() / PLd), "Fnorm_sem": block_error(F) / PLd,
          "phi3d": float(cavity.volume_fraction_3d(wall["phi2d"].mean())), "h_over_H": float(wall["h"].mean() / p["H"]),
          "dtc_wall": float(cavity.correlation_time(C, dt_rec)), "dtc_portions": dtc_portions.tolist(),
@@ -61,7 +58,7 @@ def analyse(run):
     skew = np.mean((F - F.mean()) ** 3) / F.std() ** 3
     r["skew_wall"] = float(skew)
     # vortex centre from the velocity field after tskip
-    flow = os.path.join(run, "cavity.flow")
+    flow = os.path.join(run, f"{tag}.flow")
     if os.path.exists(flow):
         cols, counts = cavity.time_average_chunks(lammps_output.read_ave_chunk(flow), first_step=p["nskip"])
         inside = (counts > 0) & (cols["Coord1"] > 0) & (cols["Coord1"] < p["L"]) & (cols["Coord2"] > 0)
@@ -74,7 +71,7 @@ def analyse(run):
             r["ell_over_L"], centre = np.nan, None
         field = (cols["Coord1"], cols["Coord2"], vx, vy, p["L"], centre)
     # three scales of force: samples for the PDFs and Eq. 7 fits
-    snaps = lammps_output.read_dump(os.path.join(run, "cavity.contacts"))
+    snaps = lammps_output.read_dump(os.path.join(run, f"{tag}.contacts"))
     f = np.concatenate([s["v_fwall"] for s in snaps if len(s)])
     f = f[f > 0]
     r["contacts_per_record"] = float(len(f) / max(1, len(snaps)))
@@ -90,7 +87,7 @@ def analyse(run):
             r[f"fit_{scale}"] = [float(x) for x in cavity.fit_trunc_lognormal(scaled)]
         except ValueError:
             r[f"fit_{scale}"] = [np.nan] * 3
-    us = os.path.join(run, "cavity.us.txt")
+    us = os.path.join(run, f"{tag}.us.txt")
     if os.path.exists(us):
         u = lammps_output.read_ave_time(us)
         r["mu_ratio"] = float(u["mu_ratio_mean"].mean())
@@ -100,14 +97,14 @@ def analyse(run):
 
 
 def read_runs(top):
-    """analyse of every finished run directory top/<set>/<tag>:
-    {"<set>/<tag>": (row, data)}"""
+    """analyse of every finished run of top (its sets' directories
+    top/<set>/, each holding one directory per run): {"<set>/<name>": (row,
+    data)}, the set and the name from each run's job.json"""
     runs = {}
-    for run in sorted(glob.glob(os.path.join(top, "*", "*"))):
-        if os.path.isdir(run):
-            out = analyse(run)
-            if out:
-                runs[os.path.relpath(run, top)] = out
+    for set_name in sorted(os.listdir(top)) if os.path.isdir(top) else []:
+        for run, settings, result in study.finished_jobs(os.path.join(top, set_name)):
+            if settings.get("kind") == "cavity":
+                runs[f"{settings['set']}/{settings['name']}"] = analyse(run, settings, result)
     return runs
 
 
@@ -119,7 +116,11 @@ def g(x, digits=3):
 def print_tables(runs, fit):
     """The markdown table of every run, the Eq. 4 fit of the scan (fit:
     scan_fit's) and the table of the ultrasound set (us/<base>_f0 beside
-    us/<base>_f70), on stdout."""
+    us/<base>_f70): the text (each line as print writes it)."""
+    lines = []
+
+    def print(*parts):
+        lines.append(" ".join(str(part) for part in parts) + "\n")
     print("| run | H/d | N_P | N_U | I_M | grains | recorded (H/U; s) | F/(PLd) | ℓ/L | Φ* | ⟨Δt_c⟩ (d/U) | Δt_c wall (d/U) "
           "| CV, skewness of F | Eq. 7 wall μ, σ, f0 | wall time (s) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
@@ -149,6 +150,7 @@ def print_tables(runs, fit):
                   f"| {a['cv_wall']:.2f} / {b['cv_wall']:.2f} | {fa[0]:.2f}, {fa[1]:.2f}, {fa[2]:.2g} / "
                   f"{fb[0]:.2f}, {fb[1]:.2f}, {fb[2]:.2g} | {b.get('mu_ratio', np.nan):.3f}, "
                   f"{b.get('frac_below_half', np.nan):.3f} |")
+    return "".join(lines)
 
 
 def figures(runs, fit, figdir):
@@ -200,14 +202,22 @@ def scan_fit(runs):
     return None
 
 
-def collect(top, figdir):
-    """What collect.py does: the tables on stdout, the figures into figdir,
+def collect(top):
+    """What study.py collect does: the tables on stdout and in top/tables.md,
     summary.json (every run's row, the Eq. 4 fit) into top."""
     runs = read_runs(top)
     fit = scan_fit(runs)
-    print_tables(runs, fit)
-    figures(runs, fit, figdir)
+    text = print_tables(runs, fit)
+    print(text, end="")
+    with open(os.path.join(top, "tables.md"), "w") as handle:
+        handle.write(text)
     with open(os.path.join(top, "summary.json"), "w") as f:
         json.dump({"runs": {n: r for n, (r, _) in runs.items()},
                    "eq4_fit": None if fit is None else [list(map(float, fit[0])), list(map(float, fit[1])), fit[2]]},
                   f, indent=1, default=float)
+
+
+def draw(top, figdir):
+    """What study.py figures does: the figures of the runs of top into figdir"""
+    runs = read_runs(top)
+    figures(runs, scan_fit(runs), figdir)

@@ -1,16 +1,21 @@
 """examples/cavity (paper 004's lid-driven cavity) end to end on a small
 cavity: the deck runs in LAMMPS, its three scales of wall force come from
 different LAMMPS consumers (a dump of the contacts, compute reduce/chunk,
-compute reduce) and must agree; acoustic_tools.cavity reads every output."""
+compute reduce) and must agree; acoustic_tools.cavity reads every output.
+The small cavity runs as a job of the study (acoustic_tools.cavity_study,
+behind examples/cavity/study.py: job.json, then in.cavity writes
+result.json), and study.py collect reads it."""
+import json
 import math
 import os
 import re
 import subprocess
+import sys
 
 import numpy as np
 import pytest
 
-from acoustic_tools import cavity, lammps_output
+from acoustic_tools import cavity, cavity_study, lammps_output, study
 
 LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "cavity")
@@ -31,14 +36,50 @@ def run_deck(path, variables):
 
 @pytest.fixture(scope="module")
 def small_run(tmp_path_factory):
-    path = tmp_path_factory.mktemp("cavity")
-    log = run_deck(path, SMALL)
-    return path, log
+    """the small cavity as the job OUT/test/small of the study (tag c)"""
+    out = tmp_path_factory.mktemp("cavity")
+    path = out / "test" / "small"
+    settings = dict(cavity_study.job_settings("test", "small", SMALL["Hd"], SMALL["NP"], SMALL["NU"],
+                                              SMALL["strain"], SMALL["tskip"], 0, tag=SMALL["tag"]),
+                    nrec=SMALL["nrec"])
+    printed = cavity_study.run_job(LMP, HERE, str(path), settings)
+    assert printed.startswith("test/small: ") and "FAILED" not in printed, printed
+    return path, (path / "log.lammps").read_text()
+
+
+def params(path):
+    """the run's parameters: its result.json"""
+    return study.read_result(str(path))
+
+
+def test_job_and_result(small_run):
+    path, _ = small_run
+    settings = study.read_job(str(path))
+    assert settings["set"] == "test" and settings["name"] == "small" and settings["tag"] == "c"
+    p = params(path)
+    for key in ("d", "H", "L", "P", "U", "I_M", "NP", "NU", "dt", "nevery", "nskip", "nshear", "freq",
+                "grains", "Hpacked", "Fnorm_running", "wall_seconds"):
+        assert isinstance(p[key], (int, float)), key
+    assert p["NP"] == SMALL["NP"] and p["Hd"] == SMALL["Hd"] and p["wall_seconds"] > 0
+
+
+def test_collect_reads_the_job(small_run):
+    path, _ = small_run
+    out = path.parent.parent
+    done = subprocess.run([sys.executable, os.path.join(HERE, "study.py"), "collect", "--out", str(out)],
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert (out / "tables.md").read_text() == done.stdout and "| test/small | 4 | 4 | 10 | 0.625 |" in done.stdout
+    row = json.loads((out / "summary.json").read_text())["runs"]["test/small"]
+    p = params(path)
+    assert row["run"] == "test/small" and row["grains"] == p["grains"] and row["wall_s"] == p["wall_seconds"]
+    # the deck's running mean and the tools' mean of the records
+    assert row["Fnorm"] == pytest.approx(p["Fnorm_running"], rel=1e-3)
 
 
 def test_control_parameters_are_paper_004s(small_run):
     path, log = small_run
-    p = lammps_output.read_key_values(path / "c.params")
+    p = params(path)
     d, H = p["d"], p["H"]
     assert H == pytest.approx(4 * d) and p["L"] == pytest.approx(5 * H)
     assert p["P"] == pytest.approx(cavity.pressure_from_NP(4, 0.6, 2500, 9.81, H), rel=1e-12)
@@ -53,7 +94,7 @@ def test_control_parameters_are_paper_004s(small_run):
 
 def test_three_scales_of_wall_force_agree(small_run):
     path, _ = small_run
-    p = lammps_output.read_key_values(path / "c.params")
+    p = params(path)
     wall = lammps_output.read_ave_time(str(path / "c.wall.txt"))
     F = wall["F"]
     portions = np.column_stack([wall[f"F_{i}"] for i in range(1, 11)])
@@ -79,7 +120,7 @@ def test_three_scales_of_wall_force_agree(small_run):
 
 def test_mean_force_and_vortex(small_run):
     path, _ = small_run
-    p = lammps_output.read_key_values(path / "c.params")
+    p = params(path)
     wall = lammps_output.read_ave_time(str(path / "c.wall.txt"))
     fnorm = wall["F"].mean() / (p["P"] * p["L"] * p["d"])
     # the deck's own running mean (fix ave/time ave running) is the mean of the records
@@ -104,6 +145,7 @@ def test_mean_force_and_vortex(small_run):
 
 def test_ultrasound_from_the_bottom(tmp_path):
     log = run_deck(tmp_path, dict(SMALL, strain=2, freq=70e3, tag="u"))
+    assert study.read_result(str(tmp_path)) is None and (tmp_path / "u.result.json").exists()
     assert "not in the vibration network" in log      # region side walls: free surfaces, said once
     us = lammps_output.read_ave_time(str(tmp_path / "u.us.txt"))
     ratio = us["mu_ratio_mean"]
