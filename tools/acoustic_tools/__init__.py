@@ -10,8 +10,9 @@ Avalanches on an inclined plane (paper 000, examples/avalanche)
   avalanche              sigma_l, E_k/E_t, the stability test, t_con, theta_m,
                          the spectrum of the contact network
   avalanche_figures      the figures of paper 000
-  avalanche_collect      the ensembles of the production into tables and figures
-  avalanche_record       the result lines of the production kept in record/
+  avalanche_study        the jobs of the study (job.json), their runner, the record,
+                         the command line of examples/avalanche/study.py
+  avalanche_collect      the jobs' JSON into tables and figures
   avalanche_calibration  the calibration scan through LAMMPS's Python module
 
 Sound in confined packings (paper 003, examples/sound)
@@ -19,12 +20,14 @@ Sound in confined packings (paper 003, examples/sound)
   network_moduli         C22 and C33 from the linear response of the contact network
   packing_checks         the acceptance checks run by examples/sound/in.packing
   sound_figures          the figures of paper 003
-  sound_collect          the samples of the production into tables and figures
+  sound_collect          the jobs of the study (job.json, result.json) into tables and figures
+  sound_study            examples/sound/study.py: run, collect, figures, migrate
 
 Granular lid-driven cavity (paper 004, examples/cavity)
   cavity                 inertial number, vortex centre, correlation times, Eq. 7 fits
   cavity_figures         the figures of paper 004
-  cavity_collect         the runs of run_scan.sh into tables and figures
+  cavity_collect         the runs of the study (job.json, result.json) into tables and figures
+  cavity_study           examples/cavity/study.py: run, collect, figures
 
 The modules with a command line run as `python3 -m acoustic_tools.MODULE`
 (avalanche, avalanche_figures, lammps_log, packing_checks).
