@@ -1,5 +1,5 @@
 """Calibration scan of the vibration model on a frozen layer of
-examples/avalanche (examples/avalanche/calibrate.py is the command line and
+examples/avalanche (`examples/avalanche/study.py calibrate` is the command line and
 says what is scanned), through LAMMPS's Python module, which must be
 importable (build/lammps-tree/python) with its library (build/lammps).
 

@@ -358,7 +358,7 @@ def tcon_at_angle(packs, tag, theta):
 
 def tcon_against_hold(packs, tag, theta):
     """t_con at the angle theta for each hold time of the uniform criterion
-    (in.avalanche's tuniform; run_ensemble.sh with AVALANCHE_TUNIFORM):
+    (in.avalanche's tuniform; the t_con runs with the setting tuniform):
     [(hold, [t_con of each run, packing by packing])], the default hold
     first (tcon_runs_at_angle); nan for a run that was not uniform within
     0.1 + tfollow s."""
@@ -504,7 +504,7 @@ def print_tables(all_ens, summary):
 
 def print_tcon_against_hold(by_h):
     """t_con against the hold time of the uniform criterion, at the angles
-    where runs with another hold (AVALANCHE_TUNIFORM) are there."""
+    where runs with another hold (setting tuniform) are there."""
     cases = sorted({(H, tag, th) for H, packs in by_h.items() for p in packs
                     for tag in ("f0", "f70") for _, th, *_ in p[f"tcon_{tag}_held"]})
     if not cases:

@@ -21,7 +21,7 @@ line draws them from files:
     python3 -m acoustic_tools.avalanche_figures chains RUN.dump RUN.contacts [--frame K] -o fig10.png
         Fig. 10: force chains, width proportional to f_n, colour 1 - mu*/mu
     python3 -m acoustic_tools.avalanche_figures calibration calibration.json -o calibration.png
-        the calibration scan of examples/avalanche/calibrate.py: fraction of
+        the calibration scan of examples/avalanche/study.py calibrate: fraction of
         contacts with mu*/mu < 0.5 against U0/d, kappa_scale, C_mu and the
         damping ratio for both sources; sound speed and highest mode against kappa_scale
 """
@@ -248,7 +248,7 @@ def fig_chains(path, atoms, c, dpi=110):
 
 def fig_calibration(path, results, dpi=110):
     """The calibration scan (the results of
-    avalanche_calibration.calibration_scan, examples/avalanche/calibrate.py's
+    avalanche_calibration.calibration_scan, `examples/avalanche/study.py calibrate`'s
     JSON file): the fraction of contacts with mu*/mu < 0.5 against each
     scanned parameter for both sources, the sound speed and the highest mode
     against kappa_scale."""

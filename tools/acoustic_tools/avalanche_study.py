@@ -48,6 +48,15 @@ def _g(x):
     return f"{float(x):g}"
 
 
+def _hz(freq):
+    """A frequency as the decks' logs write it: 0, 70e3."""
+    return "0" if float(freq) == 0 else f"{_g(float(freq) / 1e3)}e3"
+
+
+def _text(value, spec):
+    return "none" if value is None else format(value, spec)
+
+
 def packing_settings(H, seed, free=1, layer=None, Edem=None, rest=None):
     """The settings that name a packing (acoustic_tools.avalanche_collect.packing_key)."""
     layer = layer if layer is not None else (400 if free else 80)
@@ -243,7 +252,7 @@ class Runner:
         if piece == "auto":
             r = study.read_result(deposit)
             piece = f"{20000 / (r['grains'] + r['base']):.1f}"
-        common = {"tag": tag, "freq": _g(s["freq"]), "kappa": _g(s["kappa"]), "source": s["source"],
+        common = {"tag": tag, "freq": _hz(s["freq"]), "kappa": _g(s["kappa"]), "source": s["source"],
                   "tfollow": _g(s["tfollow"]), "tsettle": _g(s["tsettle"]), "thetamax": _g(s["thetamax"]),
                   "obslo": geometry["obslo"], "obshi": geometry["obshi"], "dumpevery": s["dumpevery"],
                   "dumplocal": s["dumplocal"], "tpiece": piece}
@@ -304,7 +313,7 @@ class Runner:
             if not self.finished(s):
                 study.write_job(d, s)
                 restart = os.path.relpath(os.path.join(self.directory(ramp), f"{ramp['tag']}.static.restart"), d)
-                variables = {"restart": restart, "pre": 0, "tag": s["tag"], "freq": _g(s["freq"]),
+                variables = {"restart": restart, "pre": 0, "tag": s["tag"], "freq": _hz(s["freq"]),
                              "kappa": _g(s["kappa"]), "source": s["source"], "theta0": f"{theta:.1f}",
                              "thetamax": f"{theta:.1f}", "tfollow": _g(s["tfollow"]),
                              "obslo": geometry_variables(s)["obslo"], "obshi": geometry_variables(s)["obshi"],
@@ -519,11 +528,10 @@ def _demo(args):
         results.append((s, runner.ramp(s)))
     print()
     for s, r in results:
-        print(f"result (H = {args.H:g} d): {s['tag']}: freq {_g(s['freq'])} Hz  theta_m = "
-              f"{r['theta_m'] if r['theta_m'] is not None else 'none'} deg  t_con = {r['t_con']} s")
-    a0, a70 = (r["theta_m"] for _, r in results)
-    print(f"theta_m without ultrasound: {a0 if a0 is not None else 'none'} deg; with 70 kHz: "
-          f"{a70 if a70 is not None else 'none'} deg (paper 000: about 2 deg lower with 70 kHz)")
+        print(f"result (H = {args.H:g} d): {s['tag']}: freq {_hz(s['freq'])} Hz  theta_m = "
+              f"{_text(r['theta_m'], '.2f')} deg  t_con = {_text(r['t_con'], '.3f')} s")
+    a0, a70 = (_text(r["theta_m"], ".2f") for _, r in results)
+    print(f"theta_m without ultrasound: {a0} deg; with 70 kHz: {a70} deg (paper 000: about 2 deg lower with 70 kHz)")
     print(f"wall time {time.monotonic() - start:.0f} s; job directories (logs, series, dumps) in {out}")
     return 0
 

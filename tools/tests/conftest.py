@@ -1,15 +1,10 @@
-"""Fixtures shared by the tools tests: the modules behind the command lines
-examples/avalanche/collect.py and record.py."""
+"""Fixtures shared by the tools tests: the module behind
+`examples/avalanche/study.py collect`."""
 import pytest
 
-from acoustic_tools import avalanche_collect, avalanche_record
+from acoustic_tools import avalanche_collect
 
 
 @pytest.fixture(scope="session")
 def collect():
     return avalanche_collect
-
-
-@pytest.fixture(scope="session")
-def record():
-    return avalanche_record

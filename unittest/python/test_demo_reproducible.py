@@ -12,12 +12,12 @@ LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 BUILD = os.path.dirname(os.path.dirname(os.path.abspath(LMP)))
 DEMO = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "avalanche",
                     "run.sh")
-OUTPUTS = ["f0.dump", "f70.dump", "f0.contacts", "f70.contacts", "f0.series", "f70.series"]
+# the two ramps' job directories (acoustic_tools.avalanche_study.job_name)
+OUTPUTS = [f"periodic80_H6_s4871_{tag}/{tag}.{kind}" for tag in ("f0", "f70") for kind in ("dump", "contacts", "series")]
 
 
 def run_demo(out):
-    env = dict(os.environ, AVALANCHE_OUT=str(out))
-    done = subprocess.run(["bash", DEMO, BUILD], env=env, capture_output=True, text=True, timeout=1200)
+    done = subprocess.run(["bash", DEMO, BUILD, "--out", str(out)], capture_output=True, text=True, timeout=1200)
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     angles = re.findall(r"^result .*theta_m = ([0-9.]+) deg", done.stdout, re.M)
     return angles

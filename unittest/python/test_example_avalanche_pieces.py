@@ -1,5 +1,5 @@
-"""A tilt ramp of examples/avalanche run as pieces (run_ensemble.sh with
-AVALANCHE_PIECE): every piece ends after a whole angle, the next one goes on
+"""A tilt ramp of examples/avalanche run as pieces (study.py job with
+--piece): every piece ends after a whole angle, the next one goes on
 from that angle's restart, and the ramp reads as one -- the angles follow each
 other without a gap or a repeat, the series and the dumps go forward in time,
 the answer line is written once.  A piece killed in the middle of an angle
@@ -11,15 +11,20 @@ uninterrupted one bit for bit: the same angle lines, the same series data, the
 same dumps of the grains and of the contacts' mu*/mu, at 0 Hz and at 70 kHz
 (same deck), on 1 rank and on 2, with the layer at rest or flowing at the
 boundary."""
+import json
 import os
 import re
+import shutil
 import subprocess
+import sys
 
 import pytest
 
 LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "avalanche")
-ENSEMBLE = os.path.join(HERE, "run_ensemble.sh")
+STUDY = os.path.join(HERE, "study.py")
+RAMP = {"0": "periodic20_H3_s7_f0", "70e3": "periodic20_H3_s7_f70"}      # the job directories
+DEPOSIT = "periodic20_H3_s7_deposit"
 ANGLE = re.compile(r"^angle +([0-9.]+) deg: (\w+)")
 
 
@@ -27,14 +32,18 @@ def build_dir():
     return os.path.dirname(os.path.dirname(os.path.abspath(LMP)))
 
 
-def run_ensemble(out, freq="0", theta0="16", ranks="1", **env):
+def run_job(out, freq="0", theta0="16", ranks="1", *options):
     """One ramp of a small periodic layer (3 d thick, 20 d long)."""
-    environ = dict(os.environ, AVALANCHE_OUT=str(out), AVALANCHE_NP=ranks, AVALANCHE_FREE="0",
-                   AVALANCHE_LAYER="20", AVALANCHE_THETA0=theta0, **env)
-    done = subprocess.run(["bash", ENSEMBLE, build_dir(), "3", "7", freq], env=environ,
+    done = subprocess.run([sys.executable, STUDY, "job", "3", "7", freq, "--build", build_dir(), "--out", str(out),
+                           "--np", ranks, "--periodic", "--layer", "20", "--theta0", theta0, *options],
                           capture_output=True, text=True, timeout=900)
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     return done.stdout
+
+
+def share_deposit(whole, out):
+    """The deposit of the packing made once (the first job of a packing makes it)."""
+    shutil.copytree(whole.parent / DEPOSIT, out / DEPOSIT)
 
 
 def angles(log):
@@ -65,23 +74,22 @@ def dump_steps(path):
 @pytest.fixture(scope="module")
 def whole(tmp_path_factory):
     out = tmp_path_factory.mktemp("whole")
-    run_ensemble(out, AVALANCHE_PIECE="0")
-    return out / "H3" / "s7"
+    run_job(out, "0", "16", "1", "--piece", "0")
+    return out / RAMP["0"]
 
 
 @pytest.fixture(scope="module")
 def pieced(tmp_path_factory, whole):
     out = tmp_path_factory.mktemp("pieced")
-    # the same packing: the deposit is made by the first job of a packing
-    os.makedirs(out / "H3" / "s7")
-    for name in ("deposit.restart", "log.deposit"):
-        (out / "H3" / "s7" / name).write_bytes((whole / name).read_bytes())
-    said = run_ensemble(out, AVALANCHE_PIECE="0.2", AVALANCHE_MAXPIECES="1")
-    path = out / "H3" / "s7"
+    share_deposit(whole, out)
+    said = run_job(out, "0", "16", "1", "--piece", "0.2", "--max-pieces", "1")
+    path = out / RAMP["0"]
     assert "paused after 1 piece" in said
+    assert not (path / "result.json").exists(), "no result before the ramp ends"
     first = angle_lines(path / "log.f0")
     # a killed piece: output written past the last whole angle
-    theta, tres, step, last, following = open(path / "f0.resume").read().split()
+    theta, tres, step, last, following, carry = open(path / "f0.resume").read().split()
+    assert carry in ("f0.last0.in", "f0.last1.in")
     assert float(following) == float(theta) + 0.5, "the next angle, one dtheta on"
     with open(path / "f0.series", "a") as f:
         f.write(f"{float(tres) + 0.0005:.4f} 99 0 0 0 0 0 0 0 0\n")
@@ -89,7 +97,7 @@ def pieced(tmp_path_factory, whole):
         f.write(f"ITEM: TIMESTEP\n{int(step) + 100}\nITEM: NUMBER OF ATOMS\n0\n")
     with open(path / "log.f0", "a") as f:
         f.write("(killed here)\n")
-    said = run_ensemble(out, AVALANCHE_PIECE="0.2")
+    said = run_job(out, "0", "16", "1", "--piece", "0.2")
     return path, first, float(theta), said
 
 
@@ -110,12 +118,10 @@ def test_pieced_ramp_is_the_uninterrupted_one_bit_for_bit(whole, pieced):
 def test_pieces_at_70_kHz_bit_for_bit(tmp_path, whole):
     """Two creeping angles (1.3 s each) as one process and as two pieces."""
     for sub in ("one", "two"):
-        os.makedirs(tmp_path / sub / "H3" / "s7")
-        for name in ("deposit.restart", "log.deposit"):
-            (tmp_path / sub / "H3" / "s7" / name).write_bytes((whole / name).read_bytes())
-    run_ensemble(tmp_path / "one", freq="70e3", theta0="12", AVALANCHE_PIECE="2.5", AVALANCHE_MAXPIECES="1")
-    run_ensemble(tmp_path / "two", freq="70e3", theta0="12", AVALANCHE_PIECE="0.2", AVALANCHE_MAXPIECES="2")
-    one, two = tmp_path / "one" / "H3" / "s7", tmp_path / "two" / "H3" / "s7"
+        share_deposit(whole, tmp_path / sub)
+    run_job(tmp_path / "one", "70e3", "12", "1", "--piece", "2.5", "--max-pieces", "1")
+    run_job(tmp_path / "two", "70e3", "12", "1", "--piece", "0.2", "--max-pieces", "2")
+    one, two = tmp_path / "one" / RAMP["70e3"], tmp_path / "two" / RAMP["70e3"]
     assert len(angle_lines(two / "log.f70")) == 2
     assert angle_lines(one / "log.f70") == angle_lines(two / "log.f70")
     assert "mean mu*/mu 1.000" not in angle_lines(two / "log.f70")[0], "the ultrasound lowers friction"
@@ -131,16 +137,13 @@ def test_pieces_in_a_flowing_layer_on_2_ranks_bit_for_bit(tmp_path, whole):
     made set-ups of their own before the first angle's (each one rescales the
     tangential history of the sliding contacts)."""
     for sub in ("one", "two"):
-        os.makedirs(tmp_path / sub / "H3" / "s7")
-        for name in ("deposit.restart", "log.deposit"):
-            (tmp_path / sub / "H3" / "s7" / name).write_bytes((whole / name).read_bytes())
+        share_deposit(whole, tmp_path / sub)
     # from 14 deg the layer creeps after the pre-ramp and flows from about 17.5
     # deg; a start at 17 deg flowed uniformly at once on one machine (the path of
     # a 70 kHz ramp changes with the BLAS kernels), leaving no boundary to test
-    flowing = dict(freq="70e3", theta0="14", ranks="2", AVALANCHE_TFOLLOW="0")
-    run_ensemble(tmp_path / "one", AVALANCHE_PIECE="0", **flowing)
-    said = run_ensemble(tmp_path / "two", AVALANCHE_PIECE="0.05", **flowing)
-    one, two = tmp_path / "one" / "H3" / "s7", tmp_path / "two" / "H3" / "s7"
+    run_job(tmp_path / "one", "70e3", "14", "2", "--tfollow", "0", "--piece", "0")
+    said = run_job(tmp_path / "two", "70e3", "14", "2", "--tfollow", "0", "--piece", "0.05")
+    one, two = tmp_path / "one" / RAMP["70e3"], tmp_path / "two" / RAMP["70e3"]
     states = angles(two / "log.f70")
     log = open(two / "log.f70").read()
     assert log.count("paused after") == len(states) - 1 >= 3, "a boundary after each angle"
@@ -154,7 +157,8 @@ def test_pieces_in_a_flowing_layer_on_2_ranks_bit_for_bit(tmp_path, whole):
     for name in ("f70.dump", "f70.contacts"):
         assert (one / name).read_bytes() == (two / name).read_bytes(), name
     assert series_data(one / "f70.series") == series_data(two / "f70.series")
-    assert f"theta_m = {states[-1][0]:.2f} deg" in said
+    assert f"theta_m = {states[-1][0]} deg" in said
+    assert json.load(open(one / "result.json"))["angles"] == json.load(open(two / "result.json"))["angles"]
 
 
 def test_pieces_read_as_one_ramp(pieced):
@@ -167,8 +171,12 @@ def test_pieces_read_as_one_ramp(pieced):
     assert steps[-1][1] == "uniform" and [s for _, s in steps[:-1]].count("uniform") == 0
     assert len(re.findall(r"theta_m = ", log)) == 1
     assert log.count("paused after") >= 2, "pieces of 0.2 s pause every few angles"
-    assert f"theta_m = {thetas[-1]:.2f} deg" in said, "jobs.txt line"
-    assert len(open(path / "f0.wall").read().split()) == log.count("paused after") + 1
+    assert f"theta_m = {thetas[-1]} deg" in said, "the run's line"
+    # result.json: every angle of every piece, as the log's angle lines say
+    result = json.load(open(path / "result.json"))
+    assert [(a["theta"], a["state"]) for a in result["angles"]] == steps
+    assert result["theta_m"] == thetas[-1] and result["settled"] in ("at rest", "NOT at rest after tsettle")
+    assert result["wall_time"] >= 0 and json.load(open(path / "job.json"))["piece"] == "0.2"
 
 
 def test_outputs_go_forward_in_time(pieced):
@@ -195,13 +203,13 @@ def test_bad_piece_variables(tmp_path, var, value, what):
     assert f"ERROR: {what}" in text, text[-500:]
 
 
-def test_contact_law_from_the_environment(tmp_path):
-    # AVALANCHE_EDEM / AVALANCHE_REST reach the deposit and the ramp, which
+def test_contact_law_from_the_options(tmp_path):
+    # --edem / --rest reach the deposit and the ramp, which
     # sets the law again after reading the deposit; the time step follows the
     # modulus as E^(-1/2) (5 us at 1e7 Pa, 2.5 us at 4e7 Pa; the log prints
     # LAMMPS's own dt, the step in force)
-    run_ensemble(tmp_path, AVALANCHE_EDEM="4e7", AVALANCHE_REST="0.5")
-    text = open(tmp_path / "H3" / "s7" / "log.f0").read()
+    run_job(tmp_path, "0", "16", "1", "--edem", "4e7", "--rest", "0.5")
+    text = open(tmp_path / "periodic20_E4e+07_e0.5_H3_s7_f0" / "log.f0").read()
     assert "contact law Edem 4e7 Pa, restitution 0.5, time step 2.5e-06 s" in text
     assert "theta_m = " in text
 
@@ -224,31 +232,25 @@ def uniform_streak_start(series, hold, eps1=0.3, eps2=0.9, fspread=0.5):
 
 
 def test_tcon_run_with_a_longer_uniform_hold(tmp_path, whole):
-    # run_ensemble.sh tcon0 from the ramp's last static state, with the
-    # default hold (10 ms) and with AVALANCHE_TUNIFORM=0.05: the held run
+    # study.py job --tcon from the ramp's last static state, with the
+    # default hold (10 ms) and with --tuniform 0.05: the held run
     # has its own log, says its hold, and its t_con is the start of the
     # first 50-sample streak of its series (counted here), never earlier
     # than the default's; both runs are the same computation up to the
     # default's end
-    path = tmp_path / "H3" / "s7"
-    os.makedirs(path)
-    for name in ("deposit.restart", "log.deposit", "log.f0", "f0.static.restart"):
-        (path / name).write_bytes((whole / name).read_bytes())
-    theta_m = float(re.search(r"theta_m = ([0-9.]+)", open(whole / "log.f0").read()).group(1))
+    shutil.copytree(whole, tmp_path / RAMP["0"])
+    theta_m = json.load(open(whole / "result.json"))["theta_m"]
     theta = f"{theta_m + 1:.1f}"
-    for hold in ("", "0.05"):
-        environ = dict(os.environ, AVALANCHE_OUT=str(tmp_path), AVALANCHE_NP="1", AVALANCHE_FREE="0",
-                       AVALANCHE_LAYER="20", AVALANCHE_TCON_STEPS="1", AVALANCHE_TUNIFORM=hold)
-        done = subprocess.run(["bash", ENSEMBLE, build_dir(), "3", "7", "tcon0"], env=environ,
-                              capture_output=True, text=True, timeout=600)
-        assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
-    default, held = path / f"log.tcon_f0_{theta}", path / f"log.tcon_f0_{theta}_u0.05"
-    t_default, t_held = (float(re.search(r"theta_m = [0-9.]+ deg  t_con = ([0-9.]+) s", open(log).read()).group(1))
-                         for log in (default, held))
+    for hold in ([], ["--tuniform", "0.05"]):
+        run_job(tmp_path, "0", "16", "1", "--tcon", "--tcon-steps", "1", *hold)
+    base = tmp_path / f"periodic20_H3_s7_tcon_f0_{theta}"
+    default, held = base / f"log.tcon_f0_{theta}", tmp_path / f"{base.name}_u0.05" / f"log.tcon_f0_{theta}_u0.05"
+    t_default, t_held = (json.load(open(log.parent / "result.json"))["t_con"] for log in (default, held))
+    assert json.load(open(held.parent / "job.json"))["tuniform"] == 0.05
     assert "uniform after 0.01 s of sigma_1 < 0.3" in open(default).read()
     assert "uniform after 0.05 s of sigma_1 < 0.3" in open(held).read()
     assert t_held >= t_default
-    assert uniform_streak_start(path / f"tcon_f0_{theta}_u0.05.series", 50) == pytest.approx(t_held, abs=2e-4)
-    assert uniform_streak_start(path / f"tcon_f0_{theta}.series", 10) == pytest.approx(t_default, abs=2e-4)
-    a = series_data(path / f"tcon_f0_{theta}.series")
-    assert series_data(path / f"tcon_f0_{theta}_u0.05.series")[:len(a)] == a
+    assert uniform_streak_start(held.parent / f"tcon_f0_{theta}_u0.05.series", 50) == pytest.approx(t_held, abs=2e-4)
+    assert uniform_streak_start(base / f"tcon_f0_{theta}.series", 10) == pytest.approx(t_default, abs=2e-4)
+    a = series_data(base / f"tcon_f0_{theta}.series")
+    assert series_data(held.parent / f"tcon_f0_{theta}_u0.05.series")[:len(a)] == a

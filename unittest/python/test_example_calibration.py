@@ -1,4 +1,4 @@
-"""examples/avalanche/calibrate.py on a small deposited layer (3 d thick, 20 d
+"""examples/avalanche/study.py calibrate on a small deposited layer (3 d thick, 20 d
 long): the scans run through LAMMPS's Python module and give what the
 physics fixes -- more lubrication for a larger amplitude, no lowered contact
 with the base for paper 000's source (its base contacts are not in the
@@ -30,7 +30,7 @@ def layer(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def scan(layer):
-    done = subprocess.run([sys.executable, os.path.join(HERE, "calibrate.py"), "deposit.restart", "scan.json",
+    done = subprocess.run([sys.executable, os.path.join(HERE, "study.py"), "calibrate", "deposit.restart", "scan.json",
                            "--quick"], cwd=layer, capture_output=True, text=True, timeout=600)
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     return layer, json.load(open(layer / "scan.json"))
@@ -69,7 +69,7 @@ def test_one_scan_without_spectrum_repeats_the_full_scan(scan):
     # those of the full scan for the same values
     work, full = scan
     values = [row["value"] for row in full["scans"]["bottom:kappa"]]
-    done = subprocess.run([sys.executable, os.path.join(HERE, "calibrate.py"), "deposit.restart", "kappa.json",
+    done = subprocess.run([sys.executable, os.path.join(HERE, "study.py"), "calibrate", "deposit.restart", "kappa.json",
                            "--scan", "kappa", "--values"] + [str(v) for v in values] +
                           ["--sources", "bottom", "--no-spectrum"],
                           cwd=work, capture_output=True, text=True, timeout=600)
@@ -78,7 +78,7 @@ def test_one_scan_without_spectrum_repeats_the_full_scan(scan):
     assert list(one["scans"]) == ["bottom:kappa"]
     assert one["scans"]["bottom:kappa"] == full["scans"]["bottom:kappa"]
     assert one["spectrum_and_speed"] == []
-    wrong = subprocess.run([sys.executable, os.path.join(HERE, "calibrate.py"), "deposit.restart", "x.json",
+    wrong = subprocess.run([sys.executable, os.path.join(HERE, "study.py"), "calibrate", "deposit.restart", "x.json",
                             "--values", "0.1"], cwd=work, capture_output=True, text=True, timeout=120)
     assert wrong.returncode != 0 and "--values needs --scan" in wrong.stderr
 
