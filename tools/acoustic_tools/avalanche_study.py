@@ -48,6 +48,16 @@ def _g(x):
     return f"{float(x):g}"
 
 
+def _number(x):
+    """A number as one writes it in a deck: 1e7, 4e8, 0.05 (Python's g without
+    the exponent's sign and zeros)."""
+    text = f"{float(x):g}"
+    if "e" in text:
+        mantissa, exponent = text.split("e")
+        text = f"{mantissa}e{int(exponent)}"
+    return text
+
+
 def _hz(freq):
     """A frequency as the decks' logs write it: 0, 70e3."""
     return "0" if float(freq) == 0 else f"{_g(float(freq) / 1e3)}e3"
@@ -66,8 +76,8 @@ def packing_settings(H, seed, free=1, layer=None, Edem=None, rest=None):
 
 def packing_name(s):
     name = (f"free{_g(s['layer'])}" if s["free"] else f"periodic{_g(s['layer'])}")
-    name += f"_E{_g(s['Edem'])}" if s.get("Edem") is not None else ""
-    name += f"_e{_g(s['rest'])}" if s.get("rest") is not None else ""
+    name += f"_E{_number(s['Edem'])}" if s.get("Edem") is not None else ""
+    name += f"_e{_number(s['rest'])}" if s.get("rest") is not None else ""
     return f"{name}_H{_g(s['H'])}_s{s['seed']}"
 
 
@@ -149,8 +159,9 @@ def cut_after(directory, tag, t, theta, step):
         path = os.path.join(directory, name)
         if not os.path.exists(path):
             continue
-        lines, keep, on = open(path).read().split("\n"), [], True
-        k = 0
+        with open(path) as f:
+            lines = f.readlines()
+        keep, on, k = [], True, 0
         while k < len(lines):
             if lines[k].startswith("ITEM: TIMESTEP"):
                 on = int(lines[k + 1]) <= step
@@ -162,7 +173,7 @@ def cut_after(directory, tag, t, theta, step):
                 keep.append(lines[k])
             k += 1
         with open(path, "w") as f:
-            f.write("\n".join(keep))
+            f.writelines(keep)
 
 
 class Runner:
@@ -206,9 +217,9 @@ class Runner:
     def contact(s):
         law = {}
         if s.get("Edem") is not None:
-            law["Edem"] = _g(s["Edem"])
+            law["Edem"] = _number(s["Edem"])
         if s.get("rest") is not None:
-            law["rest"] = _g(s["rest"])
+            law["rest"] = _number(s["rest"])
         return law
 
     def finish(self, directory, logs):

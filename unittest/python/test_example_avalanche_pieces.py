@@ -209,7 +209,7 @@ def test_contact_law_from_the_options(tmp_path):
     # modulus as E^(-1/2) (5 us at 1e7 Pa, 2.5 us at 4e7 Pa; the log prints
     # LAMMPS's own dt, the step in force)
     run_job(tmp_path, "0", "16", "1", "--edem", "4e7", "--rest", "0.5")
-    text = open(tmp_path / "periodic20_E4e+07_e0.5_H3_s7_f0" / "log.f0").read()
+    text = open(tmp_path / "periodic20_E4e7_e0.5_H3_s7_f0" / "log.f0").read()
     assert "contact law Edem 4e7 Pa, restitution 0.5, time step 2.5e-06 s" in text
     assert "theta_m = " in text
 
