@@ -2,7 +2,7 @@
 # external project of this build.  The LAMMPS tree is not modified: a thin
 # overlay tree in the build directory links to it, holds a patched copy of its
 # cmake/ directory and of the files that cmake/patches/*.patch change, and
-# links src/ACOUSTIC to this repository's package.
+# links src/ACOUSTIC and lib/acoustic to this repository's package and library.
 include(ExternalProject)
 include(${CMAKE_CURRENT_LIST_DIR}/AcousticPatchLammps.cmake)
 
@@ -21,18 +21,25 @@ function(_acoustic_link target link)
   endif()
 endfunction()
 
-file(MAKE_DIRECTORY ${ACOUSTIC_LAMMPS_TREE}/src)
+# lib was a link to LAMMPS's lib/ in build trees made before lib/acoustic existed
+if(IS_SYMLINK ${ACOUSTIC_LAMMPS_TREE}/lib)
+  file(REMOVE ${ACOUSTIC_LAMMPS_TREE}/lib)
+endif()
+file(MAKE_DIRECTORY ${ACOUSTIC_LAMMPS_TREE}/src ${ACOUSTIC_LAMMPS_TREE}/lib)
 file(GLOB _entries RELATIVE ${LAMMPS_SOURCE_DIR} ${LAMMPS_SOURCE_DIR}/*)
 foreach(_e ${_entries})
-  if(NOT _e STREQUAL "cmake" AND NOT _e STREQUAL "src")
+  if(NOT _e STREQUAL "cmake" AND NOT _e STREQUAL "src" AND NOT _e STREQUAL "lib")
     _acoustic_link(${LAMMPS_SOURCE_DIR}/${_e} ${ACOUSTIC_LAMMPS_TREE}/${_e})
   endif()
 endforeach()
-file(GLOB _entries RELATIVE ${LAMMPS_SOURCE_DIR}/src ${LAMMPS_SOURCE_DIR}/src/*)
-foreach(_e ${_entries})
-  _acoustic_link(${LAMMPS_SOURCE_DIR}/src/${_e} ${ACOUSTIC_LAMMPS_TREE}/src/${_e})
+foreach(_sub src lib)
+  file(GLOB _entries RELATIVE ${LAMMPS_SOURCE_DIR}/${_sub} ${LAMMPS_SOURCE_DIR}/${_sub}/*)
+  foreach(_e ${_entries})
+    _acoustic_link(${LAMMPS_SOURCE_DIR}/${_sub}/${_e} ${ACOUSTIC_LAMMPS_TREE}/${_sub}/${_e})
+  endforeach()
 endforeach()
 _acoustic_link(${PROJECT_SOURCE_DIR}/src/ACOUSTIC ${ACOUSTIC_LAMMPS_TREE}/src/ACOUSTIC)
+_acoustic_link(${PROJECT_SOURCE_DIR}/lib/acoustic ${ACOUSTIC_LAMMPS_TREE}/lib/acoustic)
 if(NOT EXISTS ${ACOUSTIC_LAMMPS_TREE}/cmake/CMakeLists.txt)
   file(COPY ${LAMMPS_SOURCE_DIR}/cmake DESTINATION ${ACOUSTIC_LAMMPS_TREE})
 endif()
@@ -44,9 +51,11 @@ foreach(_patch ${_patches})
   acoustic_apply_lammps_patch(${_patch} ${ACOUSTIC_LAMMPS_TREE} ${LAMMPS_SOURCE_DIR})
 endforeach()
 
-# a new or removed file in src/ACOUSTIC changes the style headers: reconfigure LAMMPS
+# a new or removed file in src/ACOUSTIC changes the style headers, one in
+# lib/acoustic the library's sources: reconfigure LAMMPS
 file(GLOB _pkg_files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/ACOUSTIC/*.cpp
-     ${PROJECT_SOURCE_DIR}/src/ACOUSTIC/*.h)
+     ${PROJECT_SOURCE_DIR}/src/ACOUSTIC/*.h ${PROJECT_SOURCE_DIR}/lib/acoustic/*.cpp
+     ${PROJECT_SOURCE_DIR}/lib/acoustic/*.h)
 string(MD5 _pkg_files_hash "${_pkg_files}")
 
 ExternalProject_Add(lammps

@@ -4,7 +4,7 @@
 #   cmake -D LAMMPS_DIR=/path/to/lammps -P cmake/install-into-lammps.cmake
 #   cmake -S /path/to/lammps/cmake -B build -D PKG_GRANULAR=on -D PKG_ACOUSTIC=on
 #
-# It copies src/ACOUSTIC and the dependency module, adds ACOUSTIC to the
+# It copies src/ACOUSTIC, lib/acoustic and the dependency module, adds ACOUSTIC to the
 # package lists of LAMMPS's CMakeLists.txt and applies cmake/patches/*.patch
 # (contact histories across write_restart between runs).  Running it again
 # refreshes the copy.
@@ -19,6 +19,7 @@ endif()
 get_filename_component(_top ${CMAKE_CURRENT_LIST_DIR}/.. ABSOLUTE)
 include(${CMAKE_CURRENT_LIST_DIR}/AcousticPatchLammps.cmake)
 file(COPY ${_top}/src/ACOUSTIC DESTINATION ${LAMMPS_DIR}/src)
+file(COPY ${_top}/lib/acoustic DESTINATION ${LAMMPS_DIR}/lib)
 file(COPY ${_top}/cmake/Modules/Packages/ACOUSTIC.cmake
      DESTINATION ${LAMMPS_DIR}/cmake/Modules/Packages)
 acoustic_patch_lammps_cmake(${LAMMPS_DIR}/cmake)

@@ -33,25 +33,33 @@ if (test $mode = 1) then
   fi
 fi
 
-# every source file of the package (styles and numerics)
+# every source file of the package (the styles)
 for file in *.cpp *.h; do
   test -f ${file} && action $file
 done
 
-# compiler and linker flags for Eigen, SuiteSparse and Spectra come from
-# ACOUSTIC/Makefile.lammps (edit it if they are not installed in /usr)
+# the numerics are the library lib/acoustic (build it first, from the top of
+# the LAMMPS tree: cd lib/acoustic && make -f Makefile.mpi); its compiler and linker flags for Eigen,
+# SuiteSparse and the optional solvers come from lib/acoustic/Makefile.lammps
+# (edit it if they are not installed in /usr)
 if (test $1 = 1) then
+  if (test ! -e ../../lib/acoustic/libacoustic.a) then
+    echo "ACOUSTIC: lib/acoustic/libacoustic.a is not built yet: cd lib/acoustic && make -f Makefile.mpi"
+  fi
   if (test -e ../Makefile.package) then
     sed -i -e 's/[^ \t]*acoustic[^ \t]* //g' ../Makefile.package
+    sed -i -e 's|^PKG_INC =[ \t]*|&-I../../lib/acoustic |' ../Makefile.package
+    sed -i -e 's|^PKG_PATH =[ \t]*|&-L../../lib/acoustic |' ../Makefile.package
+    sed -i -e 's|^PKG_LIB =[ \t]*|&-lacoustic |' ../Makefile.package
     sed -i -e 's|^PKG_SYSINC =[ \t]*|&$(acoustic_SYSINC) |' ../Makefile.package
     sed -i -e 's|^PKG_SYSLIB =[ \t]*|&$(acoustic_SYSLIB) |' ../Makefile.package
     sed -i -e 's|^PKG_SYSPATH =[ \t]*|&$(acoustic_SYSPATH) |' ../Makefile.package
   fi
   if (test -e ../Makefile.package.settings) then
-    sed -i -e '/^include.*ACOUSTIC.*$/d' ../Makefile.package.settings
+    sed -i -e '/^include.*acoustic.*$/d' ../Makefile.package.settings
     # multiline form needed for BSD sed on Macs
     sed -i -e '4 i \
-include ../ACOUSTIC/Makefile.lammps
+include ..\/..\/lib\/acoustic\/Makefile.lammps
 ' ../Makefile.package.settings
   fi
 elif (test $1 = 0) then
@@ -59,6 +67,6 @@ elif (test $1 = 0) then
     sed -i -e 's/[^ \t]*acoustic[^ \t]* //g' ../Makefile.package
   fi
   if (test -e ../Makefile.package.settings) then
-    sed -i -e '/^include.*ACOUSTIC.*$/d' ../Makefile.package.settings
+    sed -i -e '/^include.*acoustic.*$/d' ../Makefile.package.settings
   fi
 fi

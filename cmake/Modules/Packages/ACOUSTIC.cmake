@@ -1,7 +1,7 @@
 # Dependencies of the ACOUSTIC package.  This file is included by LAMMPS's
 # CMake build when PKG_ACOUSTIC is on (copy it to
-# cmake/Modules/Packages/ACOUSTIC.cmake of a LAMMPS tree) and by the
-# stand-alone ACOUSTIC build for its unit tests.
+# cmake/Modules/Packages/ACOUSTIC.cmake of a LAMMPS tree, and lib/acoustic to
+# the tree's lib/) and by the stand-alone ACOUSTIC build for its unit tests.
 #
 # Required:
 #   Eigen3       dense and sparse linear algebra (header only).  Inside LAMMPS
@@ -24,7 +24,8 @@
 #
 # Result: ACOUSTIC_INCLUDE_DIRS, ACOUSTIC_LIBRARIES, ACOUSTIC_DEFINITIONS
 # (ACOUSTIC_HAVE_MUMPS, _SPECTRA, _PETSC, _METIS), and, inside LAMMPS, the
-# lammps target linked against them.
+# static library of the numerics (target acoustic, from lib/acoustic, with
+# those dependencies) linked into the lammps target.
 
 set(ACOUSTIC_INCLUDE_DIRS)
 set(ACOUSTIC_LIBRARIES)
@@ -199,7 +200,13 @@ else()
 endif()
 
 if(TARGET lammps)
-  target_include_directories(lammps PRIVATE ${ACOUSTIC_INCLUDE_DIRS})
-  target_link_libraries(lammps PRIVATE ${ACOUSTIC_LIBRARIES})
-  target_compile_definitions(lammps PRIVATE ${ACOUSTIC_DEFINITIONS})
+  # the numerics: the library lib/acoustic (no LAMMPS include, shared with the
+  # LIGGGHTS front end), built as LAMMPS builds its other package libraries
+  file(GLOB ACOUSTIC_LIB_SOURCES CONFIGURE_DEPENDS ${LAMMPS_LIB_SOURCE_DIR}/acoustic/[^.]*.cpp)
+  add_library(acoustic STATIC ${ACOUSTIC_LIB_SOURCES})
+  set_target_properties(acoustic PROPERTIES OUTPUT_NAME lammps_acoustic${LAMMPS_MACHINE})
+  target_include_directories(acoustic PUBLIC ${LAMMPS_LIB_SOURCE_DIR}/acoustic ${ACOUSTIC_INCLUDE_DIRS})
+  target_compile_definitions(acoustic PUBLIC ${ACOUSTIC_DEFINITIONS})
+  target_link_libraries(acoustic PUBLIC ${ACOUSTIC_LIBRARIES})
+  target_link_libraries(lammps PRIVATE acoustic)
 endif()
