@@ -43,5 +43,21 @@ namespace AcousticCitations {
       " doi =     {10.1103/PhysRevE.72.021301}\n"
       "}\n\n";
 
+  const char wall_force_fluctuations[] =
+      "ACOUSTIC package, grain-wall contacts of a sheared granular flow: "
+      "doi:10.1103/PhysRevE.96.042906\n\n"
+      "@Article{kneib2017force,\n"
+      " author =  {Kneib, Fran\\c{c}ois and Faug, Thierry and Nicolet, Gilles and\n"
+      "            Eckert, Nicolas and Naaim, Mohamed and Dufour, Fr\\'ed\\'eric},\n"
+      " title =   {Force fluctuations on a wall in interaction with a granular\n"
+      "            lid-driven cavity flow},\n"
+      " journal = {Physical Review E},\n"
+      " year =    {2017},\n"
+      " volume =  {96},\n"
+      " number =  {4},\n"
+      " pages =   {042906},\n"
+      " doi =     {10.1103/PhysRevE.96.042906}\n"
+      "}\n\n";
+
 }    // namespace AcousticCitations
 }    // namespace LAMMPS_NS

@@ -30,6 +30,9 @@ namespace AcousticCitations {
   // the linearised Hertz-Mindlin network, its modes and its pulse response
   // (compute vibration/modes, compute vibration/pulse)
   extern const char confined_wave_propagation[];
+  // grain-wall contacts of a sheared granular flow (the tangential sub-models
+  // on the walls of fix wall/gran and wall/gran/region)
+  extern const char wall_force_fluctuations[];
 
 }    // namespace AcousticCitations
 }    // namespace LAMMPS_NS

@@ -34,6 +34,10 @@ GranSubModTangentialAcoustic<Model>::GranSubModTangentialAcoustic(GranularModel 
     Model(gm, lmp), model_size_history(this->size_history)
 {
   if (lmp->citeme) lmp->citeme->add(AcousticCitations::two_time_scale_model);
+  // fix wall/gran and wall/gran/region set their model's contact type before
+  // they read its sub-models
+  if (lmp->citeme && gm->contact_type != PAIR)
+    lmp->citeme->add(AcousticCitations::wall_force_fluctuations);
   // the wrapped model's transfer factors (-1 by default: a tangential
   // displacement changes sign between i and j), +1 for the factor
   auto *factors = new double[model_size_history + 1];
