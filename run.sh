@@ -69,7 +69,8 @@ install_tools() {
     2>/dev/null) || true
   [ "$found" = "$(realpath "$top/tools/acoustic_tools")" ] && return
   say "installing the Python tools of $top/tools (editable)"
-  as_root /usr/bin/python3 -m pip install -q --no-deps --no-build-isolation --no-index --break-system-packages \
+  as_root /usr/bin/python3 -m pip install -q --root-user-action=ignore --no-deps --no-build-isolation \
+    --no-index --break-system-packages \
     -e "$top/tools" >/dev/null
 }
 
