@@ -44,24 +44,24 @@ def _contact_geometry(grains, contacts, width, height):
     return ci, cj, wall, which_wall, normal, radius[ci], arm_j
 
 
-def network_response(grains, contacts, width, height, wall_motion, eta=1.0):
-    """the force (x, y) of the grains on the top wall per unit area after the
-    top wall moved by wall_motion = (ux, uy), the bottom wall and the
-    periodic box staying put; grains: dict with id, x, y, radius; contacts:
-    the columns of fix acoustic/mindlin's local array by position
-    (0: i, 1: j, 0 for a wall, 3: k_n; a lammps_output.Snapshot)"""
+def compatibility(grains, contacts, width, height, eta=1.0):
+    """The linear network of a 2D packing between two walls (bottom y = 0,
+    top y = height): the compatibility matrix B (2 rows per contact: the
+    normal and tangential relative displacement of the contact point, j
+    minus i, or the wall minus i, for the 3 DOFs x, y, theta of each grain
+    in the order of grains["id"]), the springs (k_n, eta k_n per contact,
+    in the order of B's rows), and the geometry of _contact_geometry as a
+    dict: normal, tangent, wall (bool), which_wall (0 bottom, 1 top) per
+    contact.  A wall's motion w enters a contact's rows as (w.n, w.t)."""
     ci, cj, wall, which_wall, normal, arm_i, arm_j = _contact_geometry(grains, contacts, width, height)
     kn = np.asarray(contacts[3], dtype=float)
     tangent = np.column_stack((-normal[:, 1], normal[:, 0]))
     ngrains = len(grains["id"])
     ncontacts = len(ci)
-    top_motion = np.asarray(wall_motion, dtype=float)
-
     # rows: the normal and tangential relative displacements of each contact,
     # s = B u + s_wall (j minus i at the contact point; rotation theta about z
     # moves the contact point of i by r_i theta t and that of j by -r_j theta t)
     rows, cols, vals = [], [], []
-    prescribed = np.zeros(2 * ncontacts)
     for c in range(ncontacts):
         n, t = normal[c], tangent[c]
         i = ci[c]
@@ -73,9 +73,6 @@ def network_response(grains, contacts, width, height, wall_motion, eta=1.0):
         cols.append(3 * i + 2)
         vals.append(-arm_i[c])
         if wall[c]:
-            if which_wall[c] == 1:
-                prescribed[2 * c] = top_motion @ n
-                prescribed[2 * c + 1] = top_motion @ t
             continue
         j = cj[c]
         for r, direction in ((2 * c, n), (2 * c + 1, t)):
@@ -88,20 +85,56 @@ def network_response(grains, contacts, width, height, wall_motion, eta=1.0):
     B = scipy.sparse.csr_matrix((vals, (rows, cols)), shape=(2 * ncontacts, 3 * ngrains))
     springs = np.empty(2 * ncontacts)
     springs[0::2], springs[1::2] = kn, eta * kn
-    K = (B.T @ scipy.sparse.diags(springs) @ B).tocsc()
-    load = -(B.T @ (springs * prescribed))
-    # grains without stiffness (rattlers) and floppy directions: a tiny
-    # regularisation keeps K invertible and leaves them unloaded
+    return B, springs, {"normal": normal, "tangent": tangent, "wall": wall, "which_wall": which_wall}
+
+
+def wall_stretch(geometry, motions):
+    """the wall part of the contacts' relative displacements (2 per contact,
+    as B's rows) when the walls move: motions = {0: (ux, uy) of the bottom
+    wall, 1: (ux, uy) of the top wall}"""
+    normal, tangent = geometry["normal"], geometry["tangent"]
+    prescribed = np.zeros(2 * len(normal))
+    for which, motion in motions.items():
+        chosen = geometry["wall"] & (geometry["which_wall"] == which)
+        motion = np.asarray(motion, dtype=float)
+        prescribed[0::2][chosen] = normal[chosen] @ motion
+        prescribed[1::2][chosen] = tangent[chosen] @ motion
+    return prescribed
+
+
+def wall_force(geometry, springs, stretch, which=1):
+    """the force (x, y) of the grains on one wall (0 bottom, 1 top) from the
+    contacts' relative displacements (stretch, as B's rows):
+    -(k_n s_n n + k_t s_t t) summed over that wall's contacts"""
+    normal, tangent = geometry["normal"], geometry["tangent"]
+    on = geometry["wall"] & (geometry["which_wall"] == which)
+    force = -(springs[0::2][on, None] * stretch[0::2][on, None] * normal[on]
+              + springs[1::2][on, None] * stretch[1::2][on, None] * tangent[on])
+    return force.sum(axis=0)
+
+
+def regularised(K):
+    """K plus a tiny multiple of the identity: grains without stiffness
+    (rattlers) and floppy directions stay unloaded instead of making K
+    singular"""
     diagonal = K.diagonal()
     scale = np.median(diagonal[diagonal > 0]) if np.any(diagonal > 0) else 1.0
-    K = K + scipy.sparse.identity(3 * ngrains, format="csc") * (1e-12 * scale)
-    u = scipy.sparse.linalg.spsolve(K, load)
+    return (K + scipy.sparse.identity(K.shape[0], format="csc") * (1e-12 * scale)).tocsc()
+
+
+def network_response(grains, contacts, width, height, wall_motion, eta=1.0):
+    """the force (x, y) of the grains on the top wall per unit area after the
+    top wall moved by wall_motion = (ux, uy), the bottom wall and the
+    periodic box staying put; grains: dict with id, x, y, radius; contacts:
+    the columns of fix acoustic/mindlin's local array by position
+    (0: i, 1: j, 0 for a wall, 3: k_n; a lammps_output.Snapshot)"""
+    B, springs, geometry = compatibility(grains, contacts, width, height, eta)
+    prescribed = wall_stretch(geometry, {1: wall_motion})
+    K = (B.T @ scipy.sparse.diags(springs) @ B).tocsc()
+    load = -(B.T @ (springs * prescribed))
+    u = scipy.sparse.linalg.spsolve(regularised(K), load)
     stretch = B @ u + prescribed
-    on_top = wall & (which_wall == 1)
-    # force of grain i on the wall (j): -(k_n s_n n + k_t s_t t), per unit area
-    force = -(springs[0::2][on_top, None] * stretch[0::2][on_top, None] * normal[on_top]
-              + springs[1::2][on_top, None] * stretch[1::2][on_top, None] * tangent[on_top])
-    return force.sum(axis=0) / width
+    return wall_force(geometry, springs, stretch) / width
 
 
 def network_moduli(grains, contacts, width, height, eta=1.0, strain=1e-6):
