@@ -28,7 +28,7 @@ import os
 
 import numpy as np
 
-from . import lammps_output, network_moduli, sound, sound_figures, study
+from . import lammps_output, network_moduli, sound, sound_figures, sound_modes, study
 from .stats import mean_sd
 
 
@@ -41,6 +41,21 @@ PAPER_TABLE_II = {
 }
 # C22 and Phi3* of the two tables: the paper's c_l = sqrt(C22 / Phi3*)
 PAPER_C22_PHI3STAR = {1e-7: (13.9e-4, 0.48), 1e-6: (3.2e-3, 0.49), 1e-5: (7.4e-3, 0.50), 1e-4: (1.88e-2, 0.52)}
+# paper 003, Table IV: C~22(1)/C22, C~22(2)/C22, C~33(1)/C33, C~33(2)/C33
+# (forces sin(n pi y / L2), Eq. B2), and Table V: C^22(1)/C22, C^22(3)/C22,
+# C^33(1)/C33, C^33(3)/C33 (displacements imposed on lines, Eq. B3)
+PAPER_TABLE_IV = {1e-7: ("0.85 ± 0.05", "0.74 ± 0.09", "0.81 ± 0.14", "1.01 ± 0.24"),
+                  1e-6: ("0.88 ± 0.04", "0.80 ± 0.06", "0.90 ± 0.20", "0.96 ± 0.16"),
+                  1e-5: ("0.91 ± 0.05", "0.86 ± 0.06", "0.85 ± 0.10", "0.89 ± 0.11"),
+                  1e-4: ("0.93 ± 0.04", "0.88 ± 0.04", "0.85 ± 0.10", "0.90 ± 0.07")}
+PAPER_TABLE_V = {1e-7: ("1.01 ± 0.02", "1.09 ± 0.03", "1.26 ± 0.16", "2.49 ± 0.69"),
+                 1e-6: ("1.01 ± 0.01", "1.07 ± 0.07", "1.28 ± 0.20", "2.05 ± 0.45"),
+                 1e-5: ("1.01 ± 0.02", "1.06 ± 0.03", "1.15 ± 0.11", "1.65 ± 0.30"),
+                 1e-4: ("1.00 ± 0.01", "1.03 ± 0.02", "1.08 ± 0.05", "1.37 ± 0.14")}
+# the columns of Tables IV (n = 1, 2, 3) and V (n = 1, 3): key -> (Eq., n, direction, modulus)
+APPENDIX_B = {f"{modulus}_{kind}{n}_ratio": (kind, n, direction, modulus)
+              for kind, orders in (("force", (1, 2, 3)), ("lines", (1, 3)))
+              for modulus, direction in (("C22", 1), ("C33", 0)) for n in orders}
 
 
 DEFAULT_PISTON = (1, 0.001)    # in.packing's piston_mass and piston_speed
@@ -151,7 +166,43 @@ def sample_results(path, result):
         # the same moduli from the linear response of the contact network (2D)
         network = network_moduli.network_moduli(grains, contacts, summary["W"], summary["h"])
         out.update({f"{key}_network": value for key, value in network.items()})
+        out.update(appendix_b(grains, contacts, summary["W"], summary["h"], network))
     return out
+
+
+def appendix_b(grains, contacts, width, height, network):
+    """paper 003's Appendix B on one 2D packing: the apparent moduli C~22,
+    C~33 of forces sin(n pi y / L2) (Eq. B2, n = 1, 2, 3) and C^22, C^33 of
+    displacements imposed on lines (Eq. B3, n = 1, 3), over the global
+    moduli of the same network (network: network_moduli.network_moduli);
+    keys of APPENDIX_B"""
+    net = sound_modes.network(grains, contacts, width, height)
+    out = {}
+    for key, (kind, n, direction, modulus) in APPENDIX_B.items():
+        if kind == "force":
+            value = sound_modes.apparent_modulus_force(net, grains, contacts, n, direction)
+        else:
+            value = sound_modes.apparent_modulus_displacement(net, grains, n, direction)
+        out[key] = value / network[modulus]
+    return out
+
+
+def packing_modes(directory, result):
+    """The eigenmodes of one 2D packing's network (sound_modes.modes), their
+    participation ratios, the modes of Fig. 10 (sound_modes.selected_modes)
+    and how far the signal summed from the modes (Eq. 3) lies from the
+    deck's pulse_A.dat (largest difference over the largest |F_sig|)"""
+    grains = lammps_output.read_dump(os.path.join(directory, "grains.dump"))[-1]
+    contacts = lammps_output.read_dump(os.path.join(directory, "contacts.dump"))[-1]
+    net = sound_modes.network(grains, contacts, float(result["W"]), float(result["h"]))
+    found = sound_modes.modes(net)
+    participation = sound_modes.participation_ratios(found["shapes"], net["M"])
+    t, f = sound.read_pulse(os.path.join(directory, "pulse_A.dat"))
+    deviation = float(np.max(np.abs(sound_modes.modal_signal(found["omega"], found["contribution"], t) - f))
+                      / np.max(np.abs(f)))
+    return {"grains": grains, "contacts": contacts, "network": net, "modes": found,
+            "participation": participation, "selected": sound_modes.selected_modes(found, participation),
+            "signal_deviation": deviation}
 
 
 def chain_results(directory, sizes):
@@ -267,6 +318,9 @@ def pressure_entry(per_sample, p):
             entry["C22_dem_over_network"] = mean_sd([r["C22"] / r["C22_network"] for r in normal])[:2]
         if shear:
             entry["C33_dem_over_network"] = mean_sd([r["C33"] / r["C33_network"] for r in shear])[:2]
+    for key in APPENDIX_B:
+        if tall and key in tall[0]:
+            entry[key] = mean_sd([r[key] for r in tall])[:2]
     c_l, c_t = sound.sound_speeds(entry.get("C22", (math.nan,))[0], entry.get("C33", (math.nan,))[0],
                                   entry.get("phi3_star", (math.nan,))[0])
     if "C22" in entry:
@@ -450,6 +504,28 @@ def tables(results, pressures):
         e = results["pressures"][f"{p:g}"]
         lines.append(f"| {p:g} | {_cell(e, 'C22_dem_over_network')} | {_cell(e, 'C33_dem_over_network')} |")
     lines.append("")
+    for title, paper_table, keys in (
+            ("Table IV (Appendix B, Eq. B2): apparent moduli of forces f0 sin(n π y / L2) on the non-rattlers, walls "
+             "held, over the global moduli of the same contact network (H = 25 packings; mean ± s.d.)",
+             PAPER_TABLE_IV, [("C22", "force", 1), ("C22", "force", 2), ("C22", "force", 3), ("C33", "force", 1),
+                              ("C33", "force", 2), ("C33", "force", 3)]),
+            ("Table V (Appendix B, Eq. B3): apparent moduli of displacements imposed on the grains crossed by n + 2 "
+             "lines, over the global moduli of the same contact network (H = 25 packings; mean ± s.d.)",
+             PAPER_TABLE_V, [("C22", "lines", 1), ("C22", "lines", 3), ("C33", "lines", 1), ("C33", "lines", 3)])):
+        mark = "~" if keys[0][1] == "force" else "^"
+        columns = [f"C{mark}{m[1:]}({n})/{m}" for m, _, n in keys]
+        lines += _table_head([title], ["p", "source", "samples"] + columns)
+        for p in pressures:
+            e = results["pressures"][f"{p:g}"]
+            if not any(f"{m}_{kind}{n}_ratio" in e for m, kind, n in keys):
+                continue
+            if p in paper_table:
+                # the paper has n = 1, 2 (IV) or 1, 3 (V) only
+                paper = dict(zip([k for k in keys if k[2] != 3] if keys[0][1] == "force" else keys, paper_table[p]))
+                lines.append(f"| {p:g} | paper 003 | 30 | " + " | ".join(paper.get(k, "-") for k in keys) + " |")
+            lines.append(f"| {p:g} | ACOUSTIC | {e['tall_samples']} | " + " | ".join(
+                _cell(e, f"{m}_{kind}{n}_ratio") for m, kind, n in keys) + " |")
+        lines.append("")
     lines += _table_head(["Speeds and the coherent peak (c_tof from the H = 8 and H = 25 packings of each seed)"],
                          ["p", "pairs", "c_tof (10 %)", "c_tof (peak)", "c_tof (zero)", "c_ℓ", "c_t", "c_tof/c_ℓ",
                           "paper c_ℓ (Table II)", "γ (L 8-25)", "α (L 8-25)"])
@@ -531,6 +607,116 @@ def figures(results, per_sample, found, figdir):
         sound_figures.fig7_exponents(curves, os.path.join(figdir, "fig7_exponents.png"))
 
 
+def figures_job(out):
+    """(directory, settings, result) of the finished job of in.figures
+    (kind "figures", study.py figures-run) in out, or None"""
+    for directory, settings, result in study.finished_jobs(out):
+        if settings.get("kind") == "figures":
+            return directory, settings, result
+    return None
+
+
+def _dump_columns(path):
+    """x, y, radius and the displacements x, y of a dump of in.figures"""
+    snapshot = lammps_output.read_dump(path)[-1]
+    return [np.asarray(snapshot[k], dtype=float) for k in range(1, 6)]
+
+
+def mode_kind(index, selected):
+    """the kind of a mode of Fig. 10 (index into the ascending modes)"""
+    names = {"lowest": "lowest non-zero", "strongest": "large a_n b_n", "localised": "localised, high f"}
+    return next(names[kind] for kind, indices in selected.items() if index in indices)
+
+
+def packing_figures(out, per_sample, found, figdir):
+    """Figs. 1, 2, 9 (from the samples at p = 1e-4, H = 25: the first, or
+    the one of the figures job, for the network and the modes; all of them
+    for the histograms) and Figs. 3, 10, 11 (from the figures job of
+    in.figures, when there is one) into figdir; what they show, for
+    results.json"""
+    tall = sorted(key for key in per_sample if key[0] == 1e-4 and key[1] == 25)
+    if not tall:
+        return {}
+    job = figures_job(out)
+    chosen = tall[0]
+    if job:
+        chosen = next((key for key in tall if os.path.basename(found[key]) == job[1]["sample"]), chosen)
+    result = per_sample[chosen]
+    width, height = result["W"], result["h"]
+    shown = {"sample": os.path.basename(found[chosen]), "packings": len(tall)}
+
+    # Figs. 1 and 2: the networks of the packings at 1e-4
+    forces, stiffnesses, directions = [], [], []
+    for key in tall:
+        grains = lammps_output.read_dump(os.path.join(found[key], "grains.dump"))[-1]
+        contacts = lammps_output.read_dump(os.path.join(found[key], "contacts.dump"))[-1]
+        between_grains = (np.asarray(contacts[1]) != 0) & (np.asarray(contacts[2]) > 0)
+        forces.append(np.asarray(contacts[2])[between_grains])
+        stiffnesses.append(np.asarray(contacts[3])[between_grains])
+        directions.append(sound_modes.contact_directions(grains, contacts, per_sample[key]["W"],
+                                                         per_sample[key]["h"]))
+    f, k = np.concatenate(forces), np.concatenate(stiffnesses)
+    shown["force_cv"], shown["stiffness_cv"] = float(f.std() / f.mean()), float(k.std() / k.mean())
+    data = packing_modes(found[chosen], {"W": width, "h": height})
+    segments = sound_modes.network_segments(data["grains"], data["contacts"], width, height)
+    sound_figures.fig1_network(data["grains"], segments, f, k, width, height,
+                               os.path.join(figdir, "fig1_network_p1e-4.png"),
+                               f"p = 1e-4, {len(tall)} packings (grain-grain contacts)")
+    histogram = sound_modes.direction_histogram(directions)
+    shown["F2"] = {name: histogram[name]["F2"] for name in ("all", "strong", "weak")}
+    sound_figures.fig2_directions(histogram, os.path.join(figdir, "fig2_directions_p1e-4.png"),
+                                  f"p = 1e-4, bulk contacts (3 d from the walls) of {len(tall)} packings")
+
+    # Fig. 9: the spectrum and the modes' contributions of the chosen packing
+    found_modes = data["modes"]
+    if job:
+        marked = [m - 1 for m in job[2]["modes"]]
+        selected = job[2]["selected"]
+    else:
+        selected = data["selected"]
+        marked = sorted(i for indices in selected.values() for i in indices)
+    zero_modes = int(found_modes["zero"].sum())
+    sound_figures.fig9_modes(found_modes["omega"] ** 2, found_modes["contribution"], marked, zero_modes,
+                             os.path.join(figdir, "fig9_modes_p1e-4.png"), f"p = 1e-4, {shown['sample']}")
+    contribution = np.abs(found_modes["contribution"])
+    shown.update({"zero_modes": zero_modes, "modes": len(found_modes["omega"]),
+                  "signal_deviation": data["signal_deviation"],
+                  "modes_for_half_of_sum_abs_contribution": int(np.searchsorted(
+                      np.cumsum(np.sort(contribution)[::-1]), 0.5 * contribution.sum()) + 1),
+                  "marked": [{"n": int(i), "kind": mode_kind(i, selected),
+                              "f": float(found_modes["omega"][i] / (2 * math.pi)),
+                              "a_n_b_n": float(found_modes["contribution"][i]),
+                              "participation": float(data["participation"][i])} for i in marked]})
+    if not job:
+        return shown
+
+    # Figs. 3, 10, 11: the outputs of in.figures
+    directory, settings, _ = job
+    x, y, radius, ux, uy = _dump_columns(os.path.join(directory, "snapshot.dump"))
+    sound_figures.fig3_snapshot(x, y, radius, ux, uy, width, height, settings["Tsnap"],
+                                os.path.join(figdir, "fig3_snapshot_p1e-4.png"), f"p = 1e-4, {shown['sample']}")
+    shown["snapshot_time"] = settings["Tsnap"]
+    shapes = []
+    for m in settings["modes"]:
+        x, y, radius, ux, uy = _dump_columns(os.path.join(directory, f"mode_{m}.dump"))
+        i = m - 1
+        shapes.append((f"n = {i} ({mode_kind(i, selected)})\nf = {found_modes['omega'][i] / (2 * math.pi):.4g}, "
+                       f"PR = {data['participation'][i]:.2f}", x, y, radius, ux, uy))
+    sound_figures.fig10_modes(shapes, width, height, os.path.join(figdir, "fig10_modes_p1e-4.png"))
+    damped = {0.0: sound.read_pulse(os.path.join(found[chosen], "pulse_A.dat"))}
+    for zeta in settings["damping"]:
+        damped[float(zeta)] = sound.read_pulse(os.path.join(directory, f"pulse_damped_{zeta:g}.dat"))
+    sound_figures.fig11_damping(damped, os.path.join(figdir, "fig11_damping_p1e-4.png"),
+                                f"p = 1e-4, {shown['sample']}, condition A; dashpots on every contact")
+    shown["damping"] = {}
+    for zeta, (t, f) in sorted(damped.items()):
+        peak = sound.coherent_peak(t, f)
+        late = t > peak["t_zero"] + (peak["t_zero"] - peak["t10"])
+        shown["damping"][f"{zeta:g}"] = {"amplitude": peak["amplitude"], "t10": peak["t10"],
+                                         "rms_after_peak": float(np.sqrt(np.mean(f[late] ** 2)))}
+    return shown
+
+
 def collect(out):
     """What study.py collect does: results.json and tables.md into out, the
     tables on stdout"""
@@ -551,3 +737,8 @@ def draw(out, figdir):
     found, per_sample, off_target, not_at_rest = usable_samples(out)
     results = collect_results(out, per_sample, off_target, not_at_rest)
     figures(results, per_sample, found, figdir)
+    shown = packing_figures(out, per_sample, found, figdir)
+    if shown:
+        with open(os.path.join(out, "packing_figures.json"), "w") as handle:
+            json.dump(shown, handle, indent=1, default=float)
+        print(json.dumps(shown, indent=1, default=float))

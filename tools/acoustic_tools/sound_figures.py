@@ -1,5 +1,5 @@
 """Figures of paper 003 (sound in confined packings) from the results that
-examples/sound/collect.py gathers; matplotlib, PNG.  Each function takes
+acoustic_tools.sound_collect gathers (Figs. 1-4, 6-11); matplotlib, PNG.  Each function takes
 plain arrays or dicts, so it also serves users' own runs."""
 import matplotlib
 
@@ -10,9 +10,20 @@ import numpy as np  # noqa: E402
 from . import sound  # noqa: E402
 
 
-def _save(fig, path):
+def _save(fig, path, dpi=120, colours=None):
+    """tight layout, PNG; colours: a palette of that many colours (the
+    drawings of grains and arrows stay small files)"""
     fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    if colours is None:
+        fig.savefig(path, dpi=dpi)
+    else:
+        import io
+
+        from PIL import Image
+        buffer = io.BytesIO()
+        fig.savefig(buffer, dpi=dpi, format="png")
+        buffer.seek(0)
+        Image.open(buffer).convert("RGB").quantize(colors=colours).save(path, optimize=True)
     plt.close(fig)
 
 
@@ -116,5 +127,141 @@ def stress_ratio_against_overshoot(overshoot, ratio, pressure, path):
     ax.set_xscale("log")
     ax.set_xlabel(r"$p_{peak} / p$ during the compression")
     ax.set_ylabel(r"$\sigma_1/\sigma_2$")
+    ax.legend(frameon=False, fontsize=8)
+    _save(fig, path)
+
+
+# ---- figures of one packing's network and modes (sound_modes, in.figures)
+
+def _grain_dots(ax, x, y, radius, width, height):
+    ax.scatter(x, y, s=(72.0 * 0.35 * np.asarray(radius) * 2.0 * 3.2 / width) ** 2 * 4, color="0.8", zorder=1,
+               linewidths=0)
+    ax.set_xlim(0.0, width)
+    ax.set_ylim(0.0, height)
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+
+
+def fig1_network(grains, segments, forces, stiffnesses, width, height, path, title):
+    """Fig. 1: (a) the normal forces of one packing as lines of width
+    proportional to the force, (b) the same for the normal stiffness
+    dF_n/dn, (c) the histograms of the forces and stiffnesses of many
+    packings, each over its mean (equal areas); grains: dict of x, y,
+    radius; segments: rows x0, y0, x1, y1, f_n, k_n (sound_modes.network_segments)"""
+    from matplotlib.collections import LineCollection
+    fig, axes = plt.subplots(1, 3, figsize=(11.0, 4.2), gridspec_kw={"width_ratios": [1, 1, 1.1]})
+    for ax, column, label in ((axes[0], 4, "(a) normal forces"), (axes[1], 5, "(b) normal stiffnesses")):
+        _grain_dots(ax, grains["x"], grains["y"], grains["radius"], width, height)
+        values = segments[:, column]
+        lines = LineCollection(segments[:, :4].reshape(-1, 2, 2), linewidths=2.5 * values / values.mean(),
+                               colors="k", zorder=2)
+        ax.add_collection(lines)
+        ax.set_title(label, fontsize=9)
+    ax = axes[2]
+    f = np.asarray(forces) / np.mean(forces)
+    k = np.asarray(stiffnesses) / np.mean(stiffnesses)
+    bins = np.linspace(0.0, max(f.max(), k.max()), 60)
+    ax.hist(f, bins=bins, density=True, histtype="step", color="C0", label=r"$f_n / \langle f_n\rangle$")
+    ax.hist(k, bins=bins, density=True, histtype="step", color="C3", label=r"$k_n / \langle k_n\rangle$")
+    ax.set_xlabel("value / mean")
+    ax.set_ylabel("probability density")
+    ax.set_title("(c) " + title, fontsize=9)
+    ax.legend(frameon=False)
+    _save(fig, path, dpi=80, colours=32)
+
+
+def fig2_directions(histogram, path, title):
+    """Fig. 2: polar histograms of the contact directions, all, strong (force
+    above the mean) and weak contacts (histogram: sound_modes.direction_histogram),
+    each direction drawn at theta and theta + pi; the dashed circle is the
+    isotropic density 1/pi"""
+    edges = histogram["edges"]
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    width = edges[1] - edges[0]
+    fig, axes = plt.subplots(1, 3, figsize=(10.0, 3.8), subplot_kw={"projection": "polar"})
+    top = max(histogram[name]["density"].max() for name in ("all", "strong", "weak")) * 1.1
+    circle = np.linspace(0.0, 2.0 * np.pi, 200)
+    for ax, name in zip(axes, ("all", "strong", "weak")):
+        h = histogram[name]
+        for shift in (0.0, np.pi):
+            ax.bar(centres + shift, h["density"], width=width, color="C0", alpha=0.6, edgecolor="C0")
+        ax.plot(circle, np.full(len(circle), 1.0 / np.pi), "k--", lw=0.8)
+        ax.set_ylim(0.0, top)
+        ax.set_yticklabels([])
+        ax.set_title(f"{name} contacts ({h['count']})\n" + r"$F_2 = \langle n_y^2\rangle$" + f" = {h['F2']:.3f}",
+                     fontsize=9)
+    fig.suptitle(title, fontsize=9)
+    _save(fig, path, dpi=80, colours=32)
+
+
+def _arrows(ax, x, y, u, v, scale):
+    ax.quiver(x, y, u, v, angles="xy", scale_units="xy", scale=1.0 / scale, width=0.004, headwidth=3,
+              headlength=3, zorder=3)
+
+
+def fig3_snapshot(x, y, radius, ux, uy, width, height, time, path, title):
+    """Fig. 3: the displacement of every grain at one time after the pulse,
+    as arrows (magnified so that the largest is 2 d long)"""
+    fig, ax = plt.subplots(figsize=(4.6, 5.0))
+    _grain_dots(ax, x, y, radius, width, height)
+    largest = np.max(np.hypot(ux, uy))
+    _arrows(ax, x, y, ux, uy, 2.0 / largest)
+    ax.set_title(f"{title}\nt = {time:g}, arrows: displacement x {2.0 / largest:.3g}", fontsize=9)
+    _save(fig, path, dpi=100, colours=16)
+
+
+def fig9_modes(omega2, contribution, marked, zero_modes, path, title):
+    """Fig. 9: (a) omega_n^2 against the mode number n (zero modes of the
+    rattlers first; inset: the lowest non-zero ones), (b) the contribution
+    a_n b_n of each mode to the signal (Eq. 3); the modes of Fig. 10 circled"""
+    n = np.arange(len(omega2))
+    marked = np.asarray(marked, dtype=int)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10.0, 4.0))
+    left.plot(n, omega2, ".", ms=2)
+    left.plot(marked, omega2[marked], "o", mfc="none", color="C3", ms=8)
+    left.set_xlabel("mode n")
+    left.set_ylabel(r"$\omega_n^2$")
+    left.set_title(f"(a) {title}: {zero_modes} zero modes", fontsize=9)
+    inset = left.inset_axes([0.12, 0.45, 0.4, 0.45])
+    low = slice(max(zero_modes - 5, 0), zero_modes + 30)
+    inset.plot(n[low], omega2[low], ".", ms=3)
+    inset.tick_params(labelsize=6)
+    right.plot(n, contribution, "-", lw=0.6)
+    right.plot(marked, contribution[marked], "o", mfc="none", color="C3", ms=8)
+    right.axhline(0.0, color="k", lw=0.5)
+    right.set_xlabel("mode n")
+    right.set_ylabel(r"$a_n b_n$")
+    right.set_title(r"(b) contribution to $F_{sig}$ (Eq. 3), condition A", fontsize=9)
+    _save(fig, path)
+
+
+def fig10_modes(shapes, width, height, path):
+    """Fig. 10: selected eigenmodes as arrows on the grains; shapes: list of
+    (label, x, y, radius, ux, uy), each magnified so that its largest arrow
+    is 2 d long"""
+    count = len(shapes)
+    columns = 3 if count > 4 else 2
+    rows = -(-count // columns)
+    fig, axes = plt.subplots(rows, columns, figsize=(3.4 * columns, 3.7 * rows), squeeze=False)
+    for ax, (label, x, y, radius, ux, uy) in zip(axes.ravel(), shapes):
+        _grain_dots(ax, x, y, radius, width, height)
+        _arrows(ax, x, y, ux, uy, 2.0 / np.max(np.hypot(ux, uy)))
+        ax.set_title(label, fontsize=8)
+    for ax in axes.ravel()[count:]:
+        ax.axis("off")
+    _save(fig, path, dpi=65, colours=16)
+
+
+def fig11_damping(signals, path, title):
+    """Fig. 11: F_sig(t) with contact damping, signals: {fraction of critical
+    damping: (t, F)}"""
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    for k, (zeta, (t, f)) in enumerate(sorted(signals.items())):
+        ax.plot(t, f, color=f"C{k}", lw=0.9, label=f"{zeta:g} of critical")
+    ax.axhline(0.0, color="k", lw=0.5)
+    ax.set_xlabel("t")
+    ax.set_ylabel(r"$F_{sig}$ (unit pulse)")
+    ax.set_title(title, fontsize=9)
     ax.legend(frameon=False, fontsize=8)
     _save(fig, path)

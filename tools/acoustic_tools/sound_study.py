@@ -9,6 +9,10 @@
             run adds the job's wall_seconds.
   collect   OUT/results.json and OUT/tables.md (acoustic_tools.sound_collect)
   figures   the PNG figures (acoustic_tools.sound_figures)
+  figures-run  in.figures on one finished sample (default: the first at
+            p = 1e-4, H = 25) into OUT/figures_<sample>/: the snapshot of
+            Fig. 3, the modes of Fig. 10 (chosen from the network's modes:
+            sound_modes.selected_modes) and the damped signals of Fig. 11
   migrate   one-off: job.json and result.json for the sample directories
             written before the decks wrote result.json (summary.txt,
             moduli.txt, checks.txt and the log; examples/sound/record/ too)
@@ -175,6 +179,49 @@ def figures(args):
     sound_collect.draw(args.out, args.figures)
 
 
+def figures_run(args):
+    """study.py figures-run: in.figures on one finished sample"""
+    here = os.path.abspath(args.here)
+    lmp = os.path.abspath(shutil.which(args.lmp) or args.lmp)
+    out = os.path.abspath(args.out)
+    jobs = sound_collect.samples(out)
+    if args.sample:
+        chosen = [key for key, (directory, _) in jobs.items() if os.path.basename(directory) == args.sample]
+    else:
+        chosen = sorted(key for key in jobs if key[0] == 1e-4 and key[1] == 25)
+    if not chosen:
+        sys.exit(f"no finished sample {args.sample or 'at p = 1e-4, H = 25'} in {out}")
+    sample_dir, result = jobs[chosen[0]]
+    data = sound_collect.packing_modes(sample_dir, result)
+    selected = data["selected"]
+    modes = sorted(i + 1 for indices in selected.values() for i in indices)   # the deck's m: 1 = lowest
+    speed = 0.26 * (float(result["p"]) / 1e-4) ** (1.0 / 6.0)    # paper 003's c_tof (its Fig. 3: t = 80 at L = 25)
+    settings = {"kind": "figures", "deck": "in.figures", "sample": os.path.basename(sample_dir),
+                "modes": modes, "damping": [float(z) for z in args.damping],
+                "Tsnap": round(0.8 * float(result["h"]) / speed, 1),
+                "Tpulse": round(3.0 * float(result["h"]) / speed, 1)}
+    directory = os.path.join(out, "figures_" + settings["sample"])
+    os.makedirs(directory, exist_ok=True)
+    study.write_job(directory, settings)
+    command = [lmp, "-in", os.path.join(here, "in.figures"),
+               "-var", "restart", os.path.join(sample_dir, "packing.restart"), "-var", "h", repr(float(result["h"])),
+               "-var", "dir", directory, "-var", "Tsnap", str(settings["Tsnap"]),
+               "-var", "Tpulse", str(settings["Tpulse"]), "-var", "modes"] + [str(m) for m in modes] + [
+               "-var", "damping"] + [f"{z:g}" for z in settings["damping"]] + [
+               "-log", os.path.join(directory, "log.lammps"), "-screen", "none", "-nocite"]
+    print(f"{settings['sample']}: modes {modes} ({selected}, indices from 0), damping {settings['damping']}, "
+          f"snapshot at t = {settings['Tsnap']}; signal of the modes against pulse_A.dat: "
+          f"{data['signal_deviation']:.2g} of its peak", flush=True)
+    start = time.time()
+    done = subprocess.run(command, stdin=subprocess.DEVNULL)
+    if done.returncode != 0:
+        sys.exit(f"in.figures FAILED, see {os.path.join(directory, 'log.lammps')}")
+    study.write_result(directory, {"modes": modes, "selected": selected, "zero_modes": int(data["modes"]["zero"].sum()),
+                                   "signal_deviation": data["signal_deviation"],
+                                   "wall_seconds": int(time.time() - start)})
+    print(f"{directory}: done ({time.time() - start:.0f} s)")
+
+
 # ---- one-off: the samples written before the decks wrote result.json
 
 LEGACY_NAME = re.compile(r"p([0-9.e+-]+)_H([0-9]+)_s([0-9]+)(?:_m([0-9.e+-]+))?(?:_v([0-9.e+-]+))?")
@@ -293,6 +340,14 @@ def main(here, argv=None):
                             help="the chain's N (8 16 ... 2048)")
         parser.set_defaults(here=here)
 
+    def figures_run_arguments(parser):
+        common(parser)
+        parser.add_argument("--lmp", default=default_lmp(here), help="LAMMPS (default: build/lammps/lmp)")
+        parser.add_argument("--sample", help="the sample's directory name (default: the first at p = 1e-4, H = 25)")
+        parser.add_argument("--damping", nargs="+", default=["0.01", "0.03", "0.1", "0.3"],
+                            help="fractions of the critical damping of Fig. 11 (0.01 0.03 0.1 0.3)")
+        parser.set_defaults(here=here)
+
     def migrate_arguments(parser):
         common(parser)
         parser.add_argument("--remove-old", action="store_true",
@@ -302,6 +357,8 @@ def main(here, argv=None):
         "run": (run, "run the samples not yet finished (resumable)", run_arguments),
         "collect": (collect, "results.json and tables.md into OUT, the tables on stdout", common),
         "figures": (figures, "the PNG figures", lambda parser: common(parser, figures_too=True)),
+        "figures-run": (figures_run, "in.figures on one finished sample: Figs. 3, 10, 11 (about a minute)",
+                        figures_run_arguments),
         "migrate": (migrate, "one-off: job.json and result.json for the samples of the old decks",
                     migrate_arguments),
     }, argv)
