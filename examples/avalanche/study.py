@@ -8,9 +8,10 @@
 and job (one ramp), demo (./run.sh demo), record, calibrate; `study.py
 COMMAND --help`.  The work is done by acoustic_tools.avalanche_study.
 """
+import os
 import sys
 
 from acoustic_tools.avalanche_study import main
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(os.path.dirname(os.path.abspath(__file__))))

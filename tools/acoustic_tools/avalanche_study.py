@@ -38,7 +38,6 @@ import time
 from . import study
 from .lammps_log import wall_time
 
-HERE = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "avalanche"))
 MARGIN = 50               # d of bare base on each side of a free-ends layer
 KAPPA = 0.3               # kappa_scale of the ensembles (RESULTS.md)
 SEEDS = (4871, 1, 2, 3)   # the packings of the periodic set
@@ -177,11 +176,12 @@ def cut_after(directory, tag, t, theta, step):
 
 
 class Runner:
-    """Runs jobs under out with the lmp of build on np MPI ranks; say()
-    prints what it does."""
+    """Runs jobs under out with the lmp of build on np MPI ranks, the decks
+    of the directory decks (examples/avalanche); say() prints what it does."""
 
-    def __init__(self, build, out, np=2, say=print, max_pieces=None, progress=None):
+    def __init__(self, build, out, decks, np=2, say=print, max_pieces=None, progress=None):
         self.lmp = os.path.join(os.path.abspath(build), "lammps", "lmp")
+        self.decks = os.path.abspath(decks)
         if not os.access(self.lmp, os.X_OK):
             sys.exit(f"avalanche: no LAMMPS executable at {self.lmp} (build first: ./run.sh build)")
         self.out, self.np, self.say, self.max_pieces, self.progress = os.path.abspath(out), np, say, max_pieces, progress
@@ -195,8 +195,8 @@ class Runner:
 
     def lammps(self, directory, deck, variables, log, contact=None):
         """One LAMMPS process in directory; returns its wall time (s)."""
-        args = [*self.mpi, self.lmp, "-nocite", "-echo", "none", "-screen", "none", "-in", os.path.join(HERE, deck),
-                "-var", "dir", HERE]
+        args = [*self.mpi, self.lmp, "-nocite", "-echo", "none", "-screen", "none", "-in", os.path.join(self.decks, deck),
+                "-var", "dir", self.decks]
         for name, value in list((contact or {}).items()) + list(variables.items()):
             args += ["-var", name, str(value)]
         args += ["-log", log]
@@ -414,20 +414,24 @@ def record(out, dest):
 
 # ---------------------------------------------------------------- command line
 
-BUILD = os.path.normpath(os.path.join(HERE, "..", "..", "build"))
-OUT = os.path.join(HERE, "out", "production")
-RECORD = os.path.join(HERE, "record")
+def _build(here):
+    return os.path.normpath(os.path.join(here, "..", "..", "build"))
 
 
-def _runner_options(parser, out=OUT):
-    parser.add_argument("--build", default=BUILD, help="the build directory of ./run.sh (default: build/)")
+def _production(here):
+    return os.path.join(here, "out", "production")
+
+
+def _runner_options(parser, here, out=None):
+    out = out or _production(here)
+    parser.add_argument("--build", default=_build(here), help="the build directory of ./run.sh (default: build/)")
     parser.add_argument("--out", default=out, help=f"the job directories (default: {os.path.relpath(out)})")
     parser.add_argument("--np", type=int, default=2, help="MPI ranks (default 2)")
     parser.add_argument("--max-pieces", type=int, help="processes per ramp in one call (default: until it ends)")
 
 
 def _run(args):
-    runner = Runner(args.build, args.out, args.np, max_pieces=args.max_pieces)
+    runner = Runner(args.build, args.out, args.decks, args.np, max_pieces=args.max_pieces)
     unknown = [name for name in args.sets if name not in PRODUCTION]
     if unknown:
         sys.exit(f"run: unknown set {unknown[0]} ({', '.join(PRODUCTION)})")
@@ -441,18 +445,18 @@ def _run(args):
     return 0
 
 
-def _run_arguments(p):
+def _run_arguments(p, here):
     p.add_argument("sets", nargs="*", metavar="SET",
                    help="periodic (default), tcon, free, more, kappa, kappa_free, switch_on "
                         "(examples/avalanche/README.md)")
-    _runner_options(p)
+    _runner_options(p, here)
 
 
-def _job_arguments(p):
+def _job_arguments(p, here):
     p.add_argument("H", type=float, help="layer thickness / d")
     p.add_argument("seed", type=int)
     p.add_argument("freq", type=float, help="drive frequency (Hz; 0: no ultrasound)")
-    _runner_options(p)
+    _runner_options(p, here)
     p.add_argument("--periodic", action="store_true", help="a periodic layer (default: free ends)")
     p.add_argument("--layer", type=float, help="layer length / d (default 400 with free ends, 80 periodic)")
     p.add_argument("--edem", type=float, help="Young's modulus of the grains (Pa; default in.material's)")
@@ -475,7 +479,7 @@ def _job(args):
                                rest=args.rest)
     ramp = ramp_settings(packing, args.freq, kappa=args.kappa, source=args.source, theta0=args.theta0,
                          tfollow=args.tfollow, tsettle=args.tsettle, switch_on=args.switch_on, piece=args.piece)
-    runner = Runner(args.build, args.out, args.np, max_pieces=args.max_pieces)
+    runner = Runner(args.build, args.out, args.decks, args.np, max_pieces=args.max_pieces)
     if args.tcon:
         runner.tcon(ramp, args.tcon_steps, args.tcon_angles, args.tuniform)
     else:
@@ -483,9 +487,9 @@ def _job(args):
     return 0
 
 
-def _demo_arguments(p):
-    p.add_argument("--build", default=BUILD)
-    p.add_argument("--out", default=os.path.join(HERE, "out", "demo"))
+def _demo_arguments(p, here):
+    p.add_argument("--build", default=_build(here))
+    p.add_argument("--out", default=os.path.join(here, "out", "demo"))
     p.add_argument("--np", type=int, default=2)
     p.add_argument("--H", type=float, default=6)
     p.add_argument("--L", type=float, default=80)
@@ -525,7 +529,7 @@ def _demo(args):
     out = os.path.abspath(args.out)
     print(f"avalanche demo: H = {args.H:g} d, L = {args.L:g} d, periodic, source {args.source}, {args.np} MPI ranks, "
           f"outputs in {out}", flush=True)
-    runner = Runner(args.build, out, args.np, say=lambda line: None, progress=progress)
+    runner = Runner(args.build, out, args.decks, args.np, say=lambda line: None, progress=progress)
     packing = packing_settings(args.H, args.seed, free=0, layer=args.L)
     results = []
     for freq in (0, 70e3):
@@ -547,10 +551,10 @@ def _demo(args):
     return 0
 
 
-def _collect_arguments(p):
-    p.add_argument("--jobs", default=OUT, help="the job directories (default: the production's; "
+def _collect_arguments(p, here):
+    p.add_argument("--jobs", default=_production(here), help="the job directories (default: the production's; "
                                                "examples/avalanche/record for the record)")
-    p.add_argument("--tables", default=os.path.join(HERE, "out", "tables"),
+    p.add_argument("--tables", default=os.path.join(here, "out", "tables"),
                    help="where tables.md, summary.json and the figures' tables go (default out/tables)")
 
 
@@ -560,9 +564,9 @@ def _collect(args):
     return 0
 
 
-def _figures_arguments(p):
-    p.add_argument("--jobs", default=OUT)
-    p.add_argument("--figures", default=os.path.join(HERE, "figures"),
+def _figures_arguments(p, here):
+    p.add_argument("--jobs", default=_production(here))
+    p.add_argument("--figures", default=os.path.join(here, "figures"),
                    help="where the PNGs go (default examples/avalanche/figures; give another one for the record)")
 
 
@@ -572,9 +576,9 @@ def _figures(args):
     return 0
 
 
-def _record_arguments(p):
-    p.add_argument("--jobs", default=OUT)
-    p.add_argument("--record", default=RECORD)
+def _record_arguments(p, here):
+    p.add_argument("--jobs", default=_production(here))
+    p.add_argument("--record", default=os.path.join(here, "record"))
 
 
 def _record(args):
@@ -584,7 +588,7 @@ def _record(args):
     return 0
 
 
-def _calibrate_arguments(p):
+def _calibrate_arguments(p, here):
     from .avalanche_calibration import SCANS, SOURCES
     p.add_argument("restart")
     p.add_argument("output")
@@ -604,7 +608,7 @@ def _calibrate(args):
     scans = {k: (v[::len(v) - 1] if args.quick else v) for k, v in SCANS.items() if args.scan in (None, k)}
     if args.values:
         scans[args.scan] = args.values
-    results = calibration_scan(os.path.abspath(args.restart), os.path.join(HERE, "in.material"), args.freq, scans,
+    results = calibration_scan(os.path.abspath(args.restart), os.path.join(args.decks, "in.material"), args.freq, scans,
                                args.sources, spectrum=not args.no_spectrum)
     with open(args.output, "w") as handle:
         json.dump(results, handle, indent=1)
@@ -626,6 +630,15 @@ COMMANDS = {
 }
 
 
-def main(argv=None):
+def main(here, argv=None):
+    """examples/avalanche/study.py (here: examples/avalanche, the decks and
+    the defaults of the directories)"""
+    def with_decks(add_arguments):
+        def add(parser):
+            add_arguments(parser, here)
+            parser.set_defaults(decks=here)
+        return add
+
+    commands = {name: (function, text, with_decks(add)) for name, (function, text, add) in COMMANDS.items()}
     return study.main("The avalanche study of examples/avalanche (paper 000): run -> collect -> figures.",
-                      COMMANDS, argv)
+                      commands, argv)
