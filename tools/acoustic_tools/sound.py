@@ -92,6 +92,14 @@ def effective_exponents(x, y):
     return np.sqrt(x[1:] * x[:-1]), slopes
 
 
+def effective_exponents_se(x, y, y_se):
+    """effective_exponents with the standard errors of the slopes, y being
+    independent means with standard errors y_se: (x_mid, slopes, errors)"""
+    x_mid, slopes = effective_exponents(x, y)
+    relative = np.asarray(y_se, dtype=float) / np.asarray(y, dtype=float)
+    return x_mid, slopes, np.hypot(relative[1:], relative[:-1]) / np.diff(np.log(np.asarray(x, dtype=float)))
+
+
 def ensemble(signals):
     """mean and root-mean-square deviation of several signals (t, F) on the
     time grid of the first one, up to the shortest duration: (t, mean, rms)"""
