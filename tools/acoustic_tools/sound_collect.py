@@ -28,7 +28,7 @@ import os
 
 import numpy as np
 
-from . import lammps_output, network_moduli, sound, sound_figures, sound_modes, study
+from . import lammps_output, network_moduli, sound, sound_chain, sound_figures, sound_modes, study
 from .stats import mean_sd
 
 
@@ -205,49 +205,202 @@ def packing_modes(directory, result):
             "signal_deviation": deviation}
 
 
-def chain_results(directory, sizes):
-    """amplitude and width of the coherent peak against N for conditions A,
-    B, from the signals chain_A_<N>.dat, chain_B_<N>.dat of the chain job in
-    directory (sizes: the N of its result.json)"""
-    out = {}
+def width_of(peak):
+    """The width of the coherent peak, the one definition of examples/sound
+    (Fig. 7, Table III, the chains, the lattices and the packings alike):
+    its first zero crossing minus its arrival at 10 % of its height (paper
+    003 Fig. 6's inset: the first and last of its three marks)"""
+    return peak["t_zero"] - peak["t10"]
+
+
+def exponents_with_errors(sizes, amplitude, amplitude_se, width, width_se):
+    """effective exponents gamma_eff = -d log A / d log L and alpha_eff =
+    d log W / d log L between successive sizes, with the standard errors of
+    independent means propagated (zero for a single realization)"""
+    _, gamma, gamma_se = sound.effective_exponents_se(sizes, amplitude, amplitude_se)
+    _, alpha, alpha_se = sound.effective_exponents_se(sizes, width, width_se)
+    return {"gamma_eff": list(-gamma), "gamma_eff_se": list(gamma_se), "alpha_eff": list(alpha),
+            "alpha_eff_se": list(alpha_se)}
+
+
+def chain_wall_modulus(result):
+    """the walls' Hertz modulus of a chain job from its result.json:
+    1/sqrt(2) for identical springs (wall_spring_over_K 1), 2 for rigid
+    walls (2, and the chains of in.chain's first version, which did not say)"""
+    return 1.0 / math.sqrt(2.0) if abs(result.get("wall_spring_over_K", 2.0) - 1.0) < 1e-6 else 2.0
+
+
+def chain_results(directory, result):
+    """The coherent peak of a chain job (in.chain) against N for conditions A
+    and B: mean amplitude and width (width_of) over its realizations with
+    their standard errors, the effective exponents between successive N
+    (exponents_with_errors), and the largest relative deviation of its
+    signals from the same chains computed here (sound_chain: the Hertz
+    springs and masses of chain_<N>.grains, modes of the tridiagonal
+    chain): directory, result: the job's directory and result.json"""
+    sizes = sorted(result["N"])
+    realizations = int(result.get("realizations", 1)) if result.get("poly") else 1
+    wall_modulus = chain_wall_modulus(result)
+    out = {"poly": float(result.get("poly", 0.0)), "realizations": realizations,
+           "wall_spring_over_K": result.get("wall_spring_over_K", 2.0)}
+    deviation = 0.0
     for condition in ("A", "B"):
-        amplitude, width = [], []
+        columns = {"N": sizes, "amplitude": [], "amplitude_se": [], "width": [], "width_se": []}
         for n in sizes:
-            t, f = sound.read_pulse(os.path.join(directory, f"chain_{condition}_{n}.dat"))
-            peak = sound.coherent_peak(t, f)
-            amplitude.append(peak["amplitude"])
-            width.append(peak["t_peak"] - peak["t10"])
-        order = np.argsort(sizes)
-        out[condition] = {"N": list(np.array(sizes)[order].tolist()),
-                          "amplitude": list(np.array(amplitude)[order].tolist()),
-                          "rise": list(np.array(width)[order].tolist())}
+            amplitudes, widths = [], []
+            for r in range(1, realizations + 1):
+                tag = f"{n}_{r}" if result.get("poly") else f"{n}"
+                t, f = sound.read_pulse(os.path.join(directory, f"chain_{condition}_{tag}.dat"))
+                peak = sound.coherent_peak(t, f)
+                amplitudes.append(peak["amplitude"])
+                widths.append(width_of(peak))
+                grains = os.path.join(directory, f"chain_{tag}.grains")
+                if os.path.exists(grains):
+                    _, diameters, _ = sound_chain.read_chain_grains(grains)
+                    masses, springs = sound_chain.hertz_chain(diameters, result["p"], wall_modulus)
+                    model = sound_chain.linear_chain_signal(masses, springs, t, condition)
+                    deviation = max(deviation, float(np.max(np.abs(model - f)) / np.max(np.abs(f))))
+            for key, values in (("amplitude", amplitudes), ("width", widths)):
+                columns[key].append(float(np.mean(values)))
+                columns[key + "_se"].append(float(np.std(values, ddof=1) / math.sqrt(len(values)))
+                                            if len(values) > 1 else 0.0)
+        if len(sizes) >= 2:
+            columns.update(exponents_with_errors(sizes, columns["amplitude"], columns["amplitude_se"],
+                                                 columns["width"], columns["width_se"]))
+        out[condition] = columns
+    out["model_deviation"] = deviation
     return out
 
 
+def chain_jobs(out):
+    """(directory, result) of every finished chain job of out, the chains of
+    identical balls first, then by polydispersity"""
+    found = [(directory, result) for directory, settings, result in study.finished_jobs(out)
+             if settings.get("kind") == "chain"]
+    return sorted(found, key=lambda job: (job[1].get("poly", 0.0), job[1].get("wall_spring_over_K", 2.0) != 1.0))
+
+
 def chain_job(out):
-    """(directory, result) of the finished chain job of out, or None"""
-    for directory, settings, result in study.finished_jobs(out):
-        if settings.get("kind") == "chain":
-            return directory, result
-    return None
+    """(directory, result) of the finished chain of identical balls of out
+    (identical wall springs when there is one), or None"""
+    mono = [job for job in chain_jobs(out) if not job[1].get("poly")]
+    return mono[0] if mono else None
+
+
+LATTICE_MODELS = {"normal": ("frictionless", 0.0), "full": ("frictional", 1.0)}   # model -> (name, k_t / k_n)
+
+
+def lattice_jobs(out):
+    """(directory, result) of every finished lattice job (in.lattice) of out"""
+    return [(directory, result) for directory, settings, result in study.finished_jobs(out)
+            if settings.get("kind") == "lattice"]
+
+
+def lattice_results(directory, result):
+    """The coherent peak of every lattice of a lattice job (in.lattice), per
+    ball of a row, for both models and conditions; the time-of-flight speeds
+    from its two rows nearest to the packings' L = 8 and 25 (10 %, peak,
+    zero crossing) beside Eqs. 18 (frictionless) and 19 (frictional,
+    k_t = k_n), and the largest relative deviation of its signals from the
+    chain of its rows (sound_chain.lattice_row_chain, times M)"""
+    rows, heights, m_balls, a, p = result["rows"], result["h"], result["M"], result["a"], result["p"]
+    order = np.argsort(rows)
+    rows, heights = [rows[k] for k in order], [heights[k] for k in order]
+    out = {"p": p, "M": m_balls, "a": a, "rows": rows, "h": heights, "models": {}}
+    deviation = 0.0
+    for model, (name, eta) in LATTICE_MODELS.items():
+        entry = {"name": name, "eta": eta, "eq": sound_chain.lattice_speed(p, eta)}
+        for condition in ("A", "B"):
+            peaks = []
+            for n in rows:
+                t, f = sound.read_pulse(os.path.join(directory, f"lattice_{model}_{condition}_{n}.dat"))
+                peaks.append(sound.coherent_peak(t, np.asarray(f) / m_balls))
+                masses, springs = sound_chain.lattice_row_chain(n, p, eta, spacing=a)
+                chain = m_balls * sound_chain.linear_chain_signal(masses, springs, t, condition)
+                deviation = max(deviation, float(np.max(np.abs(chain - f)) / np.max(np.abs(f))))
+            entry[condition] = {"N": rows, "L": heights, "amplitude": [q["amplitude"] for q in peaks],
+                                "width": [width_of(q) for q in peaks], "t10": [q["t10"] for q in peaks],
+                                "t_peak": [q["t_peak"] for q in peaks], "t_zero": [q["t_zero"] for q in peaks]}
+            if len(rows) >= 2:
+                entry[condition].update(exponents_with_errors(rows, entry[condition]["amplitude"], [0.0] * len(rows),
+                                                              entry[condition]["width"], [0.0] * len(rows)))
+        if len(rows) >= 2:
+            short = int(np.argmin([abs(h - 8.0) for h in heights]))
+            tall = int(np.argmin([abs(h - 25.0) for h in heights]))
+            if short != tall:
+                pk = entry["A"]
+                entry["pair"] = [rows[short], rows[tall]]
+                for key in ("t10", "t_peak", "t_zero"):
+                    entry[f"c_tof_{key}"] = sound.time_of_flight_speed(heights[short], pk[key][short],
+                                                                       heights[tall], pk[key][tall])
+        out["models"][model] = entry
+    out["chain_deviation"] = deviation
+    return out
+
+
+def front_curves(out, sizes=(32, 128, 512, 2048), rows=(32, 128)):
+    """Fig. 12's curves (sound_chain.scaled_front) of condition A: the chain of
+    identical balls of out (its sizes among `sizes`) and the frictionless
+    triangular lattices at p = 1e-4 with these rows, per ball of a row"""
+    curves = {}
+    chain = chain_job(out)
+    if chain:
+        directory, result = chain
+        for n in [n for n in sizes if n in result["N"]]:
+            y, diameters, _ = sound_chain.read_chain_grains(os.path.join(directory, f"chain_{n}.grains"))
+            masses, springs = sound_chain.hertz_chain(diameters, result["p"], chain_wall_modulus(result))
+            t, f = sound.read_pulse(os.path.join(directory, f"chain_A_{n}.dat"))
+            x, value = sound_chain.scaled_front(t, f, n, springs[1], masses[0], float(np.mean(np.diff(y))),
+                                                springs[0], springs[-1])
+            curves[f"1D chain, N = {n}"] = (x, value, "line")
+    for directory, result in lattice_jobs(out):
+        if abs(result["p"] / 1e-4 - 1.0) > 1e-9:
+            continue
+        for n in [n for n in rows if n in result["rows"]]:
+            masses, springs = sound_chain.lattice_row_chain(n, result["p"], 0.0, spacing=result["a"])
+            t, f = sound.read_pulse(os.path.join(directory, f"lattice_normal_A_{n}.dat"))
+            x, value = sound_chain.scaled_front(t, np.asarray(f) / result["M"], n, springs[1], masses[0],
+                                                math.sqrt(3.0) / 2.0 * result["a"], springs[0], springs[-1])
+            keep = (x > -4.0) & (x < 3.0)
+            step = max(1, int(keep.sum() // 80))
+            curves[f"triangular lattice, {n} rows (frictionless)"] = (x[keep][::step], value[keep][::step], "points")
+    return curves
+
+
+def lattice_summary(out):
+    """results.json's "lattice" (the speeds of every lattice job, by
+    pressure and width) and "lattice_series" (the amplitude and width
+    against the rows of the jobs with at least 3 lattices, for Fig. 7 and
+    Table III)"""
+    speeds, series = {}, {}
+    for directory, result in lattice_jobs(out):
+        entry = lattice_results(directory, result)
+        speeds[os.path.basename(directory)] = entry
+        if len(entry["rows"]) >= 3:
+            for model, e in entry["models"].items():
+                for condition in ("A", "B"):
+                    series[f"{e['name']}, p = {entry['p']:g}, {condition}"] = dict(e[condition], condition=condition)
+    return speeds, series
 
 
 def height_series(per_sample, pressure):
-    """mean length, amplitude and width (condition A) of the coherent peak at
-    each height of the samples at this pressure, with effective exponents"""
+    """mean length, amplitude and width (width_of, condition A) of the
+    coherent peak at each height of the samples at this pressure, with their
+    standard errors and the effective exponents between successive heights
+    (exponents_with_errors)"""
     heights = sorted({H for (q, H, _) in per_sample if q == pressure})
     if len(heights) < 2:
         return None
     at_height = [[r for (q, H, _), r in per_sample.items() if q == pressure and H == height] for height in heights]
-    length = [float(np.mean([r["h"] for r in rows])) for rows in at_height]
-    amplitude = [float(np.mean([r["amplitude_A"] for r in rows])) for rows in at_height]
-    width = [float(np.mean([r["width_A"] for r in rows])) for rows in at_height]
-    _, g = sound.effective_exponents(length, amplitude)
-    _, a = sound.effective_exponents(length, width)
-    return {"H": heights, "L": length, "amplitude": amplitude, "width": width,
-            "samples": [len(rows) for rows in at_height], "gamma_eff": list(-g), "alpha_eff": list(a)}
-
-
+    series = {"H": heights, "samples": [len(rows) for rows in at_height],
+              "L": [float(np.mean([r["h"] for r in rows])) for rows in at_height]}
+    for key, column in (("amplitude", "amplitude_A"), ("width", "width_A")):
+        values = [[r[column] for r in rows] for rows in at_height]
+        series[key] = [float(np.mean(v)) for v in values]
+        series[key + "_se"] = [float(np.std(v, ddof=1) / math.sqrt(len(v))) if len(v) > 1 else 0.0 for v in values]
+    series.update(exponents_with_errors(series["L"], series["amplitude"], series["amplitude_se"], series["width"],
+                                        series["width_se"]))
+    return series
 
 
 def usable_samples(out):
@@ -395,15 +548,15 @@ def collect_results(out, per_sample, off_target, not_at_rest):
 
     chain_found = chain_job(out)
     if chain_found:
-        chain = chain_results(chain_found[0], chain_found[1]["N"])
-        results["chain"] = chain
-        for condition in ("A", "B"):
-            c = chain[condition]
-            if len(c["N"]) >= 2:
-                _, g = sound.effective_exponents(c["N"], c["amplitude"])
-                _, a = sound.effective_exponents(c["N"], c["rise"])
-                c["gamma_eff"] = list(-g)
-                c["alpha_eff"] = list(a)
+        results["chain"] = chain_results(*chain_found)
+    poly = [chain_results(*job) for job in chain_jobs(out) if job[1].get("poly")]
+    if poly:
+        results["chain_poly"] = {f"{c['poly']:g}": c for c in poly}
+
+    lattice, lattice_series = lattice_summary(out)
+    if lattice:
+        results["lattice"] = lattice
+        results["lattice_series"] = lattice_series
 
     # the stress ratio of every packing against the overshoot of its compression
     with_overshoot = overshoots(per_sample)
@@ -443,6 +596,87 @@ def _paper_cell(value):
 def _table_head(titles, columns):
     """title lines, a blank line, the header and separator of a markdown table"""
     return titles + ["", "| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+
+
+# paper 003, Table III: gamma and alpha (condition A unless B)
+PAPER_TABLE_III = {"chain A": ("2/3", "1/3"), "chain B": ("1", "1/3"), "poly": ("≥ 2/3", "≥ 1/3"),
+                   "lattice A": ("2/3", "1/3"), "lattice B": ("1", "1/3"), "2D": ("≈ 1.5", "≈ 1")}
+
+
+def fitted_exponents(sizes, amplitude, width, smallest=64):
+    """gamma and alpha of least-squares power laws A ~ L^-gamma, W ~ L^alpha
+    over the sizes from `smallest` on (None with fewer than two)"""
+    chosen = [k for k, n in enumerate(sizes) if n >= smallest]
+    if len(chosen) < 2:
+        return None
+    gamma, _ = sound.power_law_fit([sizes[k] for k in chosen], [amplitude[k] for k in chosen])
+    alpha, _ = sound.power_law_fit([sizes[k] for k in chosen], [width[k] for k in chosen])
+    return -gamma, alpha
+
+
+def lattice_table(results):
+    """The time-of-flight speeds of the perfect triangular lattices beside
+    Eqs. 18 (frictionless) and 19 (frictional, k_t = k_n, nu = 0)"""
+    if not results.get("lattice"):
+        return []
+    lines = _table_head(["Perfect triangular lattices (in.lattice): c_tof from the rows nearest L = 8 and 25, by the "
+                         "10 % arrival, the peak and the zero crossing, beside Eqs. 18-19; signals against the chain "
+                         "of rows: largest relative deviation"],
+                        ["job", "p", "M", "rows", "model", "c_tof (10 %)", "c_tof (peak)", "c_tof (zero)", "Eq. 18/19",
+                         "c_tof (10 %) / Eq.", "vs row chain"])
+    for name, entry in results["lattice"].items():
+        for model, e in entry["models"].items():
+            if "c_tof_t10" not in e:
+                continue
+            lines.append(f"| {name} | {entry['p']:g} | {entry['M']} | {e['pair'][0]}, {e['pair'][1]} | {e['name']} | "
+                         f"{e['c_tof_t10']:.4f} | {e['c_tof_t_peak']:.4f} | {e['c_tof_t_zero']:.4f} | {e['eq']:.4f} | "
+                         f"{e['c_tof_t10'] / e['eq']:.3f} | {entry['chain_deviation']:.1e} |")
+    return lines + [""]
+
+
+def table_iii(results):
+    """Table III's rows beside the paper's: the exponents of the chains of
+    identical and of polydisperse balls, of the triangular lattices and of
+    the 2D packings at p = 1e-4 (effective exponents between the two largest
+    sizes, ± their standard errors, and power laws fitted from N = 64 on);
+    the width is width_of's throughout"""
+    lines = _table_head(["Table III: γ (A ~ L^-γ) and α (W ~ L^α) of the coherent peak; width = first zero crossing "
+                         "− 10 % arrival; effective exponents between the two largest sizes (± s.e. over the "
+                         "realizations), and power laws fitted from N = 64 on"],
+                        ["system", "condition", "paper γ", "paper α", "γ (two largest)", "α (two largest)",
+                         "γ (fit)", "α (fit)", "sizes", "realizations"])
+
+    def row(name, paper_key, condition, c, unit="N"):
+        if "gamma_eff" not in c:
+            return
+        fit = fitted_exponents(c["N"], c["amplitude"], c["width"])
+        gamma, alpha = PAPER_TABLE_III[paper_key]
+        lines.append(f"| {name} | {condition} | {gamma} | {alpha} | {c['gamma_eff'][-1]:.3f} ± "
+                     f"{c['gamma_eff_se'][-1]:.3f} | {c['alpha_eff'][-1]:.3f} ± {c['alpha_eff_se'][-1]:.3f} | "
+                     + (f"{fit[0]:.3f} | {fit[1]:.3f}" if fit else "- | -")
+                     + f" | {unit} {c['N'][0]} … {c['N'][-1]} | {c.get('realizations', 1)} |")
+
+    chain = results.get("chain")
+    if chain:
+        walls = "identical" if abs(chain["wall_spring_over_K"] - 1.0) < 1e-6 else "twice K"
+        for condition in ("A", "B"):
+            row(f"1D chain, identical balls (wall springs {walls})", f"chain {condition}", condition,
+                dict(chain[condition], realizations=1))
+    for w, c in results.get("chain_poly", {}).items():
+        row(f"1D chain, diameters uniform in 1 ± {w}", "poly", "A", dict(c["A"], realizations=c["realizations"]))
+    for name, c in results.get("lattice_series", {}).items():
+        row(f"triangular lattice, {name}", f"lattice {c['condition']}", c["condition"], c, unit="rows")
+    e = results.get("pressures", {}).get("0.0001", {})
+    if "gamma" in e:
+        lines.append(f"| 2D disordered, p = 1e-4 | A | ≈ 1.5 | ≈ 1 | {e['gamma'][0]:.2f} ± {e['gamma'][1]:.2f} (s.d.) "
+                     f"| {e['alpha'][0]:.2f} ± {e['alpha'][1]:.2f} (s.d.) | - | - | pairs H = 8, 25 | "
+                     f"{e['samples']} pairs |")
+    series = results.get("disordered_1e-4")
+    if series:
+        row("2D disordered, p = 1e-4, heights", "2D", "A", {"N": series["H"], **{k: series[k] for k in (
+            "amplitude", "width", "gamma_eff", "gamma_eff_se", "alpha_eff", "alpha_eff_se")},
+            "realizations": min(series["samples"])}, unit="H")
+    return lines + [""]
 
 
 def tables(results, pressures):
@@ -538,6 +772,8 @@ def tables(results, pressures):
             "c_tof_t10", "c_tof_t_peak", "c_tof_t_zero", "c_l", "c_t", "c_tof_over_c_l")) +
             f" | {paper_c_l} | " + " | ".join(_cell(e, k) for k in ("gamma", "alpha")) + " |")
     lines.append("")
+    lines += lattice_table(results)
+    lines += table_iii(results)
     lines.append(f"packings left out (final pressure more than 5 % from the target): {results['off_target'] or 'none'}")
     lines.append(f"packings left out (not at rest within the deck's max_checks): {results['not_at_rest'] or 'none'}")
     if "log_overshoot_stress_ratio_correlation" in results:
@@ -551,12 +787,15 @@ def tables(results, pressures):
             if f"{key}_exponent" in results:
                 lines.append(f"{key} ∝ p^x with x = {results[key + '_exponent']:.3f} over p = "
                              f"{results[key + '_exponent_pressures']} (paper: {paper})")
-    if "chain" in results:
+    for name, chain in [("chain", results.get("chain"))] + [
+            (f"chain poly {w}", c) for w, c in results.get("chain_poly", {}).items()]:
+        if not chain:
+            continue
         for condition in ("A", "B"):
-            c = results["chain"][condition]
+            c = chain[condition]
             if "gamma_eff" in c:
-                lines.append(f"chain {condition}: N {c['N']}, gamma_eff {np.round(c['gamma_eff'], 3).tolist()}, "
-                             f"alpha_eff (rise time) {np.round(c['alpha_eff'], 3).tolist()}")
+                lines.append(f"{name} {condition}: N {c['N']}, gamma_eff {np.round(c['gamma_eff'], 3).tolist()}, "
+                             f"alpha_eff (width) {np.round(c['alpha_eff'], 3).tolist()}")
     if series:
         lines.append(f"p = 1e-4, condition A, heights: H {series['H']}, samples {series['samples']}, "
                      f"L {np.round(series['L'], 2).tolist()}, gamma_eff {np.round(series['gamma_eff'], 3).tolist()}, "
@@ -564,11 +803,44 @@ def tables(results, pressures):
     return "\n".join(lines)
 
 
-def figures(results, per_sample, found, figdir):
-    """Paper 003's Figs. 4, 6, 7, 8 and 9 and sigma1/sigma2 against the
-    overshoot (sound_figures) into figdir, from the results of
-    collect_results, the sample_results of the samples (per_sample) and
-    their directories (found)"""
+def fig5_signals(per_sample, found):
+    """Fig. 5's signals: (p, {label: (t, mean F_sig)}) of the heights at the
+    highest pressure with at least two heights (the ensemble mean of each
+    height's packings, condition A), or None"""
+    for p in sorted({q for q, _, _ in per_sample}, reverse=True):
+        heights = sorted({H for q, H, _ in per_sample if q == p})
+        if len(heights) < 2:
+            continue
+        signals = {}
+        for height in heights:
+            keys = sorted(key for key in per_sample if key[0] == p and key[1] == height)
+            t, mean, _ = sound.ensemble([sound.read_pulse(os.path.join(found[key], "pulse_A.dat")) for key in keys])
+            length = np.mean([per_sample[key]["h"] for key in keys])
+            signals[f"H = {height} (L = {length:.1f}), {len(keys)} packings"] = (t, mean)
+        return p, signals
+    return None
+
+
+def lattice_points(results):
+    """Fig. 8's lattice points: c_tof (10 %) of the lattice jobs of the
+    packings' width, frictionless and frictional, against p"""
+    points = {}
+    for entry in results.get("lattice", {}).values():
+        if entry["M"] < 8:
+            continue
+        for e in entry["models"].values():
+            if "c_tof_t10" in e:
+                ps, cs = points.setdefault(f"triangular lattice, {e['name']} (L 8, 25)", ([], []))
+                ps.append(entry["p"])
+                cs.append(e["c_tof_t10"])
+    return points
+
+
+def figures(results, per_sample, found, figdir, out=None):
+    """Paper 003's Figs. 4, 5, 6, 7, 8, 9 and 12 and sigma1/sigma2 against
+    the overshoot (sound_figures) into figdir, from the results of
+    collect_results, the sample_results of the samples (per_sample), their
+    directories (found) and (Fig. 12) the chain and lattice jobs of out"""
     at = {key: r for key, r in per_sample.items() if key[0] == 1e-4}
     tall = [(key, r) for key, r in at.items() if key[1] == 25]
     if tall:
@@ -589,16 +861,34 @@ def figures(results, per_sample, found, figdir):
         e = [results["pressures"][f"{p:g}"] for p in with_speed]
         sound_figures.fig8_speeds(with_speed, [x["c_tof_t10"][0] for x in e], [x["c_tof_t10"][1] for x in e],
                                   [x.get("c_l", np.nan) for x in e], [x.get("c_t", np.nan) for x in e],
-                                  os.path.join(figdir, "fig8_speeds.png"))
+                                  os.path.join(figdir, "fig8_speeds.png"), lattice_points(results))
     curves = {}
     if "chain" in results:
         for condition in ("A", "B"):
             c = results["chain"][condition]
             if len(c["N"]) >= 2:
-                curves[f"1D chain, {condition}"] = (c["N"], c["amplitude"], c["rise"])
+                curves[f"1D chain, identical balls, {condition}"] = (c["N"], c["amplitude"], c["width"])
+    for w, chain in results.get("chain_poly", {}).items():
+        c = chain["A"]
+        if len(c["N"]) >= 2:
+            curves[f"1D chain, d in 1 ± {w}, A ({chain['realizations']} chains)"] = (
+                c["N"], c["amplitude"], c["width"], c["amplitude_se"], c["width_se"])
+    for name, c in results.get("lattice_series", {}).items():
+        if c["condition"] == "A" and len(c["N"]) >= 2:
+            curves[f"triangular lattice, {name} (rows)"] = (c["N"], c["amplitude"], c["width"])
     if "disordered_1e-4" in results:
         d = results["disordered_1e-4"]
-        curves["disordered packings, p = 1e-4, A"] = (d["L"], d["amplitude"], d["width"])
+        curves["2D disordered packings, p = 1e-4, A"] = (d["L"], d["amplitude"], d["width"], d["amplitude_se"],
+                                                         d["width_se"])
+    front = front_curves(out) if out else {}
+    if front:
+        sound_figures.fig12_shapes(front, os.path.join(figdir, "fig12_shapes.png"),
+                                   "condition A, p = 1e-4; chains with identical wall springs (in.chain), "
+                                   "lattices per ball of a row (in.lattice)")
+    heights = fig5_signals(per_sample, found)
+    if heights:
+        sound_figures.fig5_heights(heights[1], os.path.join(figdir, "fig5_heights.png"),
+                                   f"p = {heights[0]:g}, condition A: ensemble mean of each height")
     with_overshoot = overshoots(per_sample)
     if with_overshoot:
         sound_figures.stress_ratio_against_overshoot(*zip(*with_overshoot),
@@ -736,7 +1026,7 @@ def draw(out, figdir):
     os.makedirs(figdir, exist_ok=True)
     found, per_sample, off_target, not_at_rest = usable_samples(out)
     results = collect_results(out, per_sample, off_target, not_at_rest)
-    figures(results, per_sample, found, figdir)
+    figures(results, per_sample, found, figdir, out)
     shown = packing_figures(out, per_sample, found, figdir)
     if shown:
         with open(os.path.join(out, "packing_figures.json"), "w") as handle:

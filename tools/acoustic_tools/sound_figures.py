@@ -1,5 +1,5 @@
 """Figures of paper 003 (sound in confined packings) from the results that
-acoustic_tools.sound_collect gathers (Figs. 1-4, 6-11); matplotlib, PNG.  Each function takes
+acoustic_tools.sound_collect gathers (Figs. 1-12); matplotlib, PNG.  Each function takes
 plain arrays or dicts, so it also serves users' own runs."""
 import matplotlib
 
@@ -62,44 +62,111 @@ def fig6_arrival_times(heights, t10, t_peak, t_zero, path, title):
 
 def fig7_exponents(curves, path):
     """Fig. 7: effective exponents gamma_eff = -d log A / d log L and
-    alpha_eff = d log W / d log L; curves: label -> (L, A, W)"""
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(5.5, 6.0), sharex=True)
-    for k, (label, (length, amplitude, width)) in enumerate(curves.items()):
-        x, gamma = sound.effective_exponents(length, amplitude)
-        _, alpha = sound.effective_exponents(length, width)
-        top.plot(x, -gamma, "o-", color=f"C{k}", label=label)
-        bottom.plot(x, alpha, "o-", color=f"C{k}", label=label)
+    alpha_eff = d log W / d log L between successive sizes; curves: label ->
+    (L, A, W) or (L, A, W, A_se, W_se), the means of A and W with their
+    standard errors (error bars: sound.effective_exponents_se); the paper's
+    values of Table III as grey lines"""
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(6.0, 6.5), sharex=True)
+    markers = "os^vDp<>h"
+    for k, (label, curve) in enumerate(curves.items()):
+        length, amplitude, width = curve[:3]
+        a_se, w_se = curve[3:5] if len(curve) >= 5 else (np.zeros(len(length)), np.zeros(len(length)))
+        x, gamma, gamma_se = sound.effective_exponents_se(length, amplitude, a_se)
+        _, alpha, alpha_se = sound.effective_exponents_se(length, width, w_se)
+        style = dict(color=f"C{k}", marker=markers[k % len(markers)], ms=4, lw=1, capsize=2, label=label)
+        if k == 0 or "identical" in label:
+            style["mfc"] = "none"
+        top.errorbar(x, -gamma, yerr=gamma_se, **style)
+        bottom.errorbar(x, alpha, yerr=alpha_se, **style)
     for value, style in ((2.0 / 3.0, ":"), (1.0, "--"), (1.5, "-.")):
         top.axhline(value, color="0.5", ls=style, lw=0.8)
     for value, style in ((1.0 / 3.0, ":"), (1.0, "--")):
         bottom.axhline(value, color="0.5", ls=style, lw=0.8)
-    top.set_ylabel(r"$\gamma_{eff}$")
-    bottom.set_ylabel(r"$\alpha_{eff}$")
-    bottom.set_xlabel("L")
+    top.set_ylabel(r"$\gamma_{eff} = -d\,\log A / d\,\log L$")
+    bottom.set_ylabel(r"$\alpha_{eff} = d\,\log W / d\,\log L$")
+    bottom.set_xlabel("L (balls, rows or d)")
     top.set_xscale("log")
-    top.legend(frameon=False, fontsize=8)
+    top.legend(frameon=False, fontsize=6.5)
+    bottom.set_title("W: first zero crossing − 10 % arrival", fontsize=8)
     _save(fig, path)
 
 
-def fig8_speeds(pressure, c_tof, c_tof_err, c_l, c_t, path):
+def fig8_speeds(pressure, c_tof, c_tof_err, c_l, c_t, path, lattice=None):
     """Fig. 8: sound speeds against pressure, with paper 003's Eqs. 18-19
-    and the p^(1/6) law"""
+    (Eq. 19's band: k_t/k_n = eta = 2 (1 - nu) / (2 - nu) for 0 <= nu <= 0.5)
+    and the p^(1/6) law; lattice: label -> (pressures, c_tof) of perfect
+    triangular lattices (frictionless: +, frictional: x)"""
     fig, ax = plt.subplots(figsize=(5.5, 4.2))
     p = np.asarray(pressure)
+    every = list(p) + [q for ps, _ in (lattice or {}).values() for q in ps]
+    low, high = min(every), max(every)
     ax.errorbar(p, c_tof, yerr=c_tof_err, fmt="o", label=r"$c_{tof}$ (2D disordered, this package)")
     ax.plot(p, c_l, "s", mfc="none", label=r"$c_\ell = \sqrt{C_{22}/\Phi_3^*}$")
     ax.plot(p, 2.0 * np.asarray(c_t), "v", mfc="none", label=r"$2 c_t$")
-    grid = np.logspace(np.log10(p.min()) - 0.3, np.log10(p.max()) + 0.3, 50)
+    for label, (ps, cs) in (lattice or {}).items():
+        ax.plot(ps, cs, "+" if "frictionless" in label else "x", color="C3" if "frictionless" in label else "C2",
+                ms=8, mew=1.5, ls="none", label=label)
+    grid = np.logspace(np.log10(low) - 0.3, np.log10(high) + 0.3, 50)
     ax.plot(grid, [sound.triangular_lattice_speed(x) for x in grid], "k-", lw=0.8,
             label="triangular lattice, Eq. 18")
+    ax.fill_between(grid, [sound.triangular_lattice_speed(x, eta=2.0 / 3.0) for x in grid],
+                    [sound.triangular_lattice_speed(x, eta=1.0) for x in grid], color="0.8",
+                    label=r"Eq. 19, $0 \leq \nu \leq 0.5$")
     ax.plot(grid, [sound.triangular_lattice_speed(x, eta=1.0) for x in grid], "k--", lw=0.8,
-            label=r"triangular lattice, Eq. 19 ($\eta$ = 1)")
+            label=r"Eq. 19 ($\nu$ = 0, $\eta$ = 1)")
     ax.plot(grid, 0.26 * (grid / 1e-4) ** (1.0 / 6.0), color="0.6", ls=":", label=r"$0.26\,(p/10^{-4})^{1/6}$")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel(r"$p / E^*$")
     ax.set_ylabel(r"$c / \sqrt{E^*/\rho}$")
+    ax.legend(frameon=False, fontsize=6.5)
+    _save(fig, path)
+
+
+def fig12_shapes(curves, path, title, limit=True):
+    """Fig. 12: the coherent front of condition A in the chain's scaled
+    variables, x = (c tau / l) / (c t / l)^(1/3) and y = F (c t / l)^(2/3) /
+    (K l) (tau from the time (N + 1) l / c the front needs to reach the
+    wall; the paper's normalisation u'_1(0) = c), where Eq. 16 is the one
+    curve y = -8 Ai'(-2 x) for large N (thick black: the N -> infinity
+    limit of sound_chain.airy_front); curves: label -> (x, y, style), style
+    "line" (chains) or "points" (lattices)"""
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    if limit:
+        from scipy.special import airy
+        x = np.linspace(-4.0, 3.0, 600)
+        ax.plot(x, -8.0 * airy(-2.0 * x)[1], "k-", lw=3.0, alpha=0.8, label="Eq. 16 (N → ∞), factor from Eq. C4")
+    for k, (label, (x, y, style)) in enumerate(curves.items()):
+        if style == "points":
+            ax.plot(x, y, "o", ms=3.5, color=f"C{3 + k % 4}", label=label)
+        else:
+            ax.plot(x, y, "-", lw=1.0, color=f"C{k}", label=label)
+    ax.axhline(0.0, color="k", lw=0.5)
+    ax.set_xlim(-4.0, 3.0)
+    ax.set_xlabel(r"$(c\tau/\ell)\,/\,(ct/\ell)^{1/3}$")
+    ax.set_ylabel(r"$F\,(ct/\ell)^{2/3} / K\ell$")
+    ax.set_title(title, fontsize=9)
     ax.legend(frameon=False, fontsize=7)
+    _save(fig, path)
+
+
+def fig5_heights(signals, path, title):
+    """Fig. 5: the coherent part of the signal at several source-detector
+    distances; signals: label -> (t, F) (e.g. the ensemble means of each
+    height), drawn up to a little past the first zero crossing of the
+    tallest"""
+    fig, ax = plt.subplots(figsize=(6.0, 4.0))
+    end = 0.0
+    for k, (label, (t, f)) in enumerate(signals.items()):
+        peak = sound.coherent_peak(t, f)
+        end = max(end, peak["t_zero"] + 1.5 * (peak["t_zero"] - peak["t10"]))
+        ax.plot(t, f, color=f"C{k}", lw=1.3, label=label)
+    ax.set_xlim(0.0, end)
+    ax.axhline(0.0, color="k", lw=0.5)
+    ax.set_xlabel("t")
+    ax.set_ylabel(r"$F_{sig}$ (unit pulse)")
+    ax.set_title(title, fontsize=9)
+    ax.legend(frameon=False, fontsize=8)
     _save(fig, path)
 
 

@@ -4,7 +4,10 @@
             directory OUT/p<p>_H<H>_s<seed>[_m<mass>][_v<speed>]/, N at a
             time, each skipped when its result.json is there (a job stopped
             half-way runs again); with --chain, the 1D chain (in.chain) into
-            OUT/chain/.  Each job's settings go to its job.json before
+            OUT/chain/, with --chain-poly W..., polydisperse chains into
+            OUT/chain_poly<W>/; with --lattice P... and --lattice-series
+            P..., perfect triangular lattices (in.lattice) into
+            OUT/lattice_p<P>_M<M>/.  Each job's settings go to its job.json before
             LAMMPS starts; the deck writes result.json at its end, to which
             run adds the job's wall_seconds.
   collect   OUT/results.json and OUT/tables.md (acoustic_tools.sound_collect)
@@ -38,6 +41,10 @@ PRESSURES = ("1e-4", "1e-5", "1e-6", "1e-7")
 HEIGHTS = (25, 8)
 SEEDS = (1, 2, 3, 4)
 CHAIN_SIZES = (8, 16, 32, 64, 128, 256, 512, 1024, 2048)
+CHAIN_POLY_SIZES = (8, 16, 32, 64, 128, 256, 512)
+LATTICE_ROWS = (9, 29)                    # walls 7.9 and 25.2 apart: the packings' H = 8 and 25
+LATTICE_SERIES_ROWS = (8, 16, 32, 64, 128, 256)
+LATTICE_SERIES_WIDTH = 4                  # the pulse is uniform along x: 4 balls per row suffice
 DEFAULT_MASS, DEFAULT_SPEED = "1", "0.001"
 # the variables of in.sound that a sample's job.json sets
 SAMPLE_VARIABLES = ("p", "W", "D", "H", "seed", "piston_mass", "piston_speed")
@@ -105,10 +112,50 @@ def sample_command(lmp, here, directory, settings, texts):
                       "-screen", "none", "-nocite"]
 
 
+def chain_settings(sizes, poly=0.0, realizations=1, seed=1, walls="identical", p=1e-4):
+    """The job.json of a chain job (in.chain): the sizes N, the walls
+    (identical: Appendix C's springs; rigid), the polydispersity w
+    (diameters uniform in [1 - w, 1 + w]; 0: identical balls), the chains of
+    each N (realizations) and their seed"""
+    settings = {"kind": "chain", "deck": "in.chain", "p": float(p), "N": [int(n) for n in sizes], "walls": walls,
+                "poly": float(poly)}
+    if poly:
+        settings.update({"realizations": int(realizations), "seed": int(seed)})
+    return settings
+
+
+def chain_name(settings):
+    """OUT's directory of a chain job: chain, chain_poly<w>, with _rigid for rigid walls"""
+    name = "chain" + (f"_poly{settings['poly']:g}" if settings["poly"] else "")
+    return name + ("_rigid" if settings["walls"] != "identical" else "")
+
+
 def chain_command(lmp, here, directory, settings):
-    """The LAMMPS command of the chain job"""
-    return [lmp, "-in", os.path.join(here, "in.chain"), "-var", "p", f"{settings['p']:g}",
-            "-var", "N"] + [str(n) for n in settings["N"]] + [
+    """The LAMMPS command of a chain job"""
+    command = [lmp, "-in", os.path.join(here, "in.chain"), "-var", "p", f"{settings['p']:g}",
+               "-var", "N"] + [str(n) for n in settings["N"]] + ["-var", "walls", settings.get("walls", "identical")]
+    if settings.get("poly"):
+        command += ["-var", "poly", f"{settings['poly']:g}", "-var", "realizations", str(settings["realizations"]),
+                    "-var", "seed", str(settings["seed"])]
+    return command + ["-var", "dir", directory, "-log", os.path.join(directory, "log.lammps"), "-screen", "none",
+                      "-nocite"]
+
+
+def lattice_settings(p, rows, width):
+    """The job.json of a triangular lattice (in.lattice): the pressure, the
+    numbers of rows (one lattice each) and the balls per row M"""
+    return {"kind": "lattice", "deck": "in.lattice", "p": float(p), "rows": [int(n) for n in rows], "M": int(width)}
+
+
+def lattice_name(settings, text):
+    """OUT's directory of a lattice job: lattice_p<p>_M<M> (p as given)"""
+    return f"lattice_p{text}_M{settings['M']}"
+
+
+def lattice_command(lmp, here, directory, settings, text):
+    """The LAMMPS command of a lattice job"""
+    return [lmp, "-in", os.path.join(here, "in.lattice"), "-var", "p", text, "-var", "M", str(settings["M"]),
+            "-var", "rows"] + [str(n) for n in settings["rows"]] + [
         "-var", "dir", directory, "-log", os.path.join(directory, "log.lammps"), "-screen", "none", "-nocite"]
 
 
@@ -146,7 +193,7 @@ def run(args):
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
     jobs = []
-    for p in args.pressures:
+    for p in [] if args.no_samples else args.pressures:
         for H in args.heights:
             for seed in args.seeds:
                 directory = os.path.join(out, sample_name(p, H, seed, args.piston_mass, args.piston_speed))
@@ -158,11 +205,20 @@ def run(args):
                          "piston_speed": args.piston_speed}
                 jobs.append((f"p={p} H={H} seed={seed}", directory, settings,
                              sample_command(lmp, here, directory, settings, texts)))
-    if args.chain:
-        directory = os.path.join(out, "chain")
+    chains = [chain_settings(args.chain_sizes)] if args.chain else []
+    chains += [chain_settings(args.chain_poly_sizes, w, args.chain_realizations) for w in args.chain_poly or ()]
+    for settings in chains:
+        directory = os.path.join(out, chain_name(settings))
         if study.read_result(directory) is None:
-            settings = {"kind": "chain", "deck": "in.chain", "p": 1e-4, "N": list(args.chain_sizes)}
-            jobs.append(("chain", directory, settings, chain_command(lmp, here, directory, settings)))
+            jobs.append((chain_name(settings), directory, settings, chain_command(lmp, here, directory, settings)))
+    lattices = [(p, lattice_settings(p, LATTICE_ROWS, args.width)) for p in args.lattice or ()]
+    lattices += [(p, lattice_settings(p, args.lattice_series_rows, LATTICE_SERIES_WIDTH))
+                 for p in args.lattice_series or ()]
+    for text, settings in lattices:
+        directory = os.path.join(out, lattice_name(settings, text))
+        if study.read_result(directory) is None:
+            jobs.append((os.path.basename(directory), directory, settings,
+                         lattice_command(lmp, here, directory, settings, text)))
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
         running = [pool.submit(_run_job, *job) for job in jobs]
         for finished in concurrent.futures.as_completed(running):
@@ -335,9 +391,26 @@ def main(here, argv=None):
                             help="terminal speed of the piston's dashpot, 0: free (0.001; others go to ..._v<speed>)")
         parser.add_argument("--var", nargs=2, action="append", metavar=("NAME", "VALUE"),
                             help="another variable of in.sound (recorded in job.json), e.g. --var max_checks 8000")
+        parser.add_argument("--no-samples", action="store_true",
+                            help="no packings: only the chains (and lattices) asked for")
         parser.add_argument("--chain", action="store_true", help="also the 1D chain (in.chain) into OUT/chain")
         parser.add_argument("--chain-sizes", nargs="+", type=int, default=list(CHAIN_SIZES),
                             help="the chain's N (8 16 ... 2048)")
+        parser.add_argument("--chain-poly", nargs="+", type=float, metavar="W",
+                            help="also polydisperse chains, diameters uniform in [1 - W, 1 + W], into "
+                                 "OUT/chain_poly<W> (Table III, Fig. 7), e.g. 0.05 0.1 0.2")
+        parser.add_argument("--chain-poly-sizes", nargs="+", type=int, default=list(CHAIN_POLY_SIZES),
+                            help="their N (8 16 ... 512)")
+        parser.add_argument("--chain-realizations", type=int, default=20,
+                            help="polydisperse chains of each N and W (20)")
+        parser.add_argument("--lattice", nargs="+", metavar="P",
+                            help="perfect triangular lattices at these pressures, 9 and 29 rows of --width balls, "
+                                 "into OUT/lattice_p<P>_M<W> (Figs. 8, 12; c_tof beside Eqs. 18-19)")
+        parser.add_argument("--lattice-series", nargs="+", metavar="P",
+                            help="triangular lattices of 4 balls per row and --lattice-series-rows rows at these "
+                                 "pressures, into OUT/lattice_p<P>_M4 (Figs. 7, 12; Table III)")
+        parser.add_argument("--lattice-series-rows", nargs="+", type=int, default=list(LATTICE_SERIES_ROWS),
+                            help="their rows (8 16 ... 256)")
         parser.set_defaults(here=here)
 
     def figures_run_arguments(parser):

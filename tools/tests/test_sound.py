@@ -137,5 +137,15 @@ def test_figures_are_written(tmp_path):
                               [0.07, 0.11, 0.17], [0.03, 0.05, 0.07], paths[3])
     sound_figures.fig9_spectrum(np.sqrt(np.linspace(0.0, 1.0, 50)) / (2 * math.pi), paths[4], "synthetic")
     sound_figures.stress_ratio_against_overshoot([1.5, 3.0, 10.0], [0.8, 1.0, 1.2], [1e-4, 1e-5, 1e-6], paths[5])
-    for path in paths:
+    # Fig. 7 with error bars, Fig. 8 with lattice points, Figs. 5 and 12
+    more = [tmp_path / name for name in ("f7e.png", "f8l.png", "f5.png", "f12.png")]
+    sound_figures.fig7_exponents({"poly": ([8, 16, 32], [1.0, 0.6, 0.35], [2.0, 2.6, 3.3], [0.05, 0.03, 0.02],
+                                           [0.1, 0.1, 0.1])}, more[0])
+    sound_figures.fig8_speeds([1e-6, 1e-5, 1e-4], [0.12, 0.18, 0.25], [0.01, 0.01, 0.01], [0.07, 0.11, 0.17],
+                              [0.03, 0.05, 0.07], more[1], {"triangular lattice, frictionless": ([1e-5], [0.17])})
+    sound_figures.fig5_heights({"H = 8": signals[0], "H = 25": signals[2]}, more[2], "synthetic")
+    x = np.linspace(-3.0, 3.0, 50)
+    sound_figures.fig12_shapes({"chain": (x, np.exp(-x * x), "line"), "lattice": (x, np.exp(-x * x), "points")},
+                               more[3], "synthetic")
+    for path in paths + more:
         assert path.stat().st_size > 1000, path

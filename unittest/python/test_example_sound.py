@@ -13,7 +13,7 @@ import sys
 import numpy as np
 import pytest
 
-from acoustic_tools import lammps_output, network_moduli, sound, study
+from acoustic_tools import lammps_output, network_moduli, sound, sound_chain, study
 
 LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "sound")
@@ -34,7 +34,9 @@ def jobs(tmp_path_factory):
     out = tmp_path_factory.mktemp("sound")
     printed = study_py(out, "run", "--lmp", LMP, "--out", str(out), "--jobs", "2", "--pressures", "1e-4",
                        "--heights", "8", "--seeds", "1", "--width", "8", "--var", "thermo_every", "10",
-                       "--chain", "--chain-sizes", "32", "64", "128")
+                       "--chain", "--chain-sizes", "32", "64", "128", "--chain-poly", "0.1", "--chain-poly-sizes", "16",
+                       "32", "--chain-realizations", "2", "--lattice-series", "1e-4", "--lattice-series-rows", "4", "8",
+                       "12")
     return out, printed
 
 
@@ -56,22 +58,57 @@ def test_run_writes_job_and_result(jobs):
     # a second run finds everything done and runs nothing
     assert study_py(out, "run", "--lmp", LMP, "--out", str(out), "--pressures", "1e-4", "--heights", "8",
                     "--seeds", "1", "--width", "8", "--chain", "--chain-sizes", "32", "64", "128") == ""
+    assert study_py(out, "run", "--lmp", LMP, "--out", str(out), "--no-samples", "--chain-poly", "0.1",
+                    "--chain-poly-sizes", "16", "32", "--chain-realizations", "2") == ""
 
 
-def test_chain_exponents(jobs):
+def test_chain_is_appendix_c(jobs):
+    """in.chain's chain of identical balls with identical springs at the
+    walls is Appendix C's: its signals are Eqs. C4-C6 (in the compute's
+    normalisation: A u'_1 = K / m, B u_1 = 1), and its amplitude exponents
+    approach 2/3 (A) and 1 (B) as the closed form's do"""
     out, _ = jobs
     chain = out / "chain"
     result = study.read_result(str(chain))
     assert result["N"] == [32, 64, 128] and result["free_dofs"] == [2 * n for n in (32, 64, 128)]
-    for condition, gamma in (("A", 2.0 / 3.0), ("B", 1.0)):
-        sizes = [32, 64, 128]
+    assert result["wall_spring_over_K"] == pytest.approx(1.0, rel=1e-12)
+    f = result["p"]
+    stiffness, mass, spacing = 0.5 * (3 * f) ** (1 / 3), np.pi / 6, 1.0 - (3 * f) ** (2 / 3)
+    speed = spacing * np.sqrt(stiffness / mass)
+    for condition, scale, gamma in (("A", stiffness / mass / speed, 2 / 3), ("B", 1.0 / spacing, 1.0)):
         amplitudes = []
-        for n in sizes:
-            t, f = sound.read_pulse(str(chain / f"chain_{condition}_{n}.dat"))
-            amplitudes.append(sound.coherent_peak(t, f)["amplitude"])
-        _, slopes = sound.effective_exponents(sizes, amplitudes)
-        # between 64 and 128 the effective exponent is within 0.01 of its limit
-        assert -slopes[-1] == pytest.approx(gamma, abs=0.01), condition
+        for n in result["N"]:
+            t, signal = sound.read_pulse(str(chain / f"chain_{condition}_{n}.dat"))
+            closed = scale * sound_chain.chain_signal(n, t, condition, stiffness, mass, spacing)
+            assert np.max(np.abs(signal - closed)) < 1e-8 * np.max(np.abs(closed)), (condition, n)
+            amplitudes.append(sound.coherent_peak(t, signal)["amplitude"])
+        slopes = -sound.effective_exponents(result["N"], amplitudes)[1]
+        assert slopes[0] < slopes[1] < gamma + 0.01, condition
+
+
+def test_polydisperse_chain_and_lattice(jobs):
+    """the polydisperse chains are the Hertz chains of their grains; the
+    lattice is its chain of rows, per ball (sound_chain)"""
+    out, _ = jobs
+    chain = out / "chain_poly0.1"
+    result = study.read_result(str(chain))
+    assert result["poly"] == 0.1 and result["realizations"] == 2 and result["N"] == [16, 32]
+    for n in (16, 32):
+        for r in (1, 2):
+            _, diameters, _ = sound_chain.read_chain_grains(str(chain / f"chain_{n}_{r}.grains"))
+            assert len(diameters) == n and 0.9 <= diameters.min() and diameters.max() <= 1.1
+            masses, springs = sound_chain.hertz_chain(diameters, result["p"])
+            t, signal = sound.read_pulse(str(chain / f"chain_A_{n}_{r}.dat"))
+            model = sound_chain.linear_chain_signal(masses, springs, t, "A")
+            assert np.max(np.abs(signal - model)) < 1e-8 * np.max(np.abs(signal))
+    lattice = out / "lattice_p1e-4_M4"
+    result = study.read_result(str(lattice))
+    assert result["rows"] == [4, 8, 12] and result["M"] == 4
+    for model, eta in (("normal", 0.0), ("full", 1.0)):
+        t, signal = sound.read_pulse(str(lattice / f"lattice_{model}_B_8.dat"))
+        masses, springs = sound_chain.lattice_row_chain(8, 1e-4, eta, spacing=result["a"])
+        rows = 4 * sound_chain.linear_chain_signal(masses, springs, t, "B")
+        assert np.max(np.abs(signal - rows)) < 1e-5 * np.max(np.abs(signal)), model
 
 
 def test_collect_reads_the_jobs(jobs):
@@ -86,6 +123,9 @@ def test_collect_reads_the_jobs(jobs):
     assert results["chain"]["A"]["N"] == [32, 64, 128] and len(results["chain"]["A"]["gamma_eff"]) == 2
     assert results["pressures"]["0.0001"]["samples"] == 0     # no H = 25 partner: no time of flight
     assert "| 0.0001 | ACOUSTIC |" in printed and "chain A: N [32, 64, 128]" in printed
+    assert results["chain"]["model_deviation"] < 1e-8 and results["chain_poly"]["0.1"]["realizations"] == 2
+    assert "Table III" in printed and "| 1D chain, diameters uniform in 1 ± 0.1 | A |" in printed
+    assert results["lattice_series"]["frictionless, p = 0.0001, A"]["N"] == [4, 8, 12]
 
 
 def thermo_columns(log_text, first):
