@@ -646,7 +646,20 @@ def table_iii(results):
                         ["system", "condition", "paper γ", "paper α", "γ (two largest)", "α (two largest)",
                          "γ (fit)", "α (fit)", "sizes", "realizations"])
 
-    def row(name, paper_key, condition, c, unit="N"):
+    chain = results.get("chain")
+
+    def same_sizes(c):
+        """the identical balls' exponents between the same two largest N"""
+        if not chain or "gamma_eff" not in chain["A"]:
+            return ""
+        mono = chain["A"]
+        pair = (c["N"][-2], c["N"][-1])
+        for k in range(len(mono["N"]) - 1):
+            if (mono["N"][k], mono["N"][k + 1]) == pair:
+                return f" (identical balls, same N: {mono['gamma_eff'][k]:.3f}, {mono['alpha_eff'][k]:.3f})"
+        return ""
+
+    def row(name, paper_key, condition, c, unit="N", reference=""):
         if "gamma_eff" not in c:
             return
         fit = fitted_exponents(c["N"], c["amplitude"], c["width"])
@@ -654,23 +667,24 @@ def table_iii(results):
         lines.append(f"| {name} | {condition} | {gamma} | {alpha} | {c['gamma_eff'][-1]:.3f} ± "
                      f"{c['gamma_eff_se'][-1]:.3f} | {c['alpha_eff'][-1]:.3f} ± {c['alpha_eff_se'][-1]:.3f} | "
                      + (f"{fit[0]:.3f} | {fit[1]:.3f}" if fit else "- | -")
-                     + f" | {unit} {c['N'][0]} … {c['N'][-1]} | {c.get('realizations', 1)} |")
+                     + f" | {unit} {c['N'][0]} … {c['N'][-1]}{reference} | {c.get('realizations', 1)} |")
 
-    chain = results.get("chain")
     if chain:
         walls = "identical" if abs(chain["wall_spring_over_K"] - 1.0) < 1e-6 else "twice K"
         for condition in ("A", "B"):
             row(f"1D chain, identical balls (wall springs {walls})", f"chain {condition}", condition,
                 dict(chain[condition], realizations=1))
     for w, c in results.get("chain_poly", {}).items():
-        row(f"1D chain, diameters uniform in 1 ± {w}", "poly", "A", dict(c["A"], realizations=c["realizations"]))
+        row(f"1D chain, diameters uniform in 1 ± {w}", "poly", "A", dict(c["A"], realizations=c["realizations"]),
+            reference=same_sizes(c["A"]))
     for name, c in results.get("lattice_series", {}).items():
         row(f"triangular lattice, {name}", f"lattice {c['condition']}", c["condition"], c, unit="rows")
     e = results.get("pressures", {}).get("0.0001", {})
     if "gamma" in e:
-        lines.append(f"| 2D disordered, p = 1e-4 | A | ≈ 1.5 | ≈ 1 | {e['gamma'][0]:.2f} ± {e['gamma'][1]:.2f} (s.d.) "
-                     f"| {e['alpha'][0]:.2f} ± {e['alpha'][1]:.2f} (s.d.) | - | - | pairs H = 8, 25 | "
-                     f"{e['samples']} pairs |")
+        def spread(value):
+            return f"{value[0]:.2f}" + (f" ± {value[1] / math.sqrt(e['samples']):.2f}" if e["samples"] > 1 else "")
+        lines.append(f"| 2D disordered, p = 1e-4 | A | ≈ 1.5 | ≈ 1 | {spread(e['gamma'])} | {spread(e['alpha'])} "
+                     f"| - | - | pairs H = 8, 25 of each seed | {e['samples']} pairs |")
     series = results.get("disordered_1e-4")
     if series:
         row("2D disordered, p = 1e-4, heights", "2D", "A", {"N": series["H"], **{k: series[k] for k in (
