@@ -195,7 +195,8 @@ def lattice_speed(pressure, eta=0.0, spacing=1.0):
 
 
 def lattice_walls_ratio(pressure, wall_modulus=2.0):
-    """K_wall / K_bulk of the row chain (frictionless bulk spring); the paper
-    quotes 3^(5/6)/4 = 0.62 for its walls"""
+    """K_wall / K_bulk of the row chain (frictionless bulk spring): 4 / 3^(5/6)
+    = 1.60 for rigid planes; the paper's "K_wall/K_bulk = 3^(5/6)/4 = 0.62" is
+    its inverse"""
     _, springs = lattice_row_chain(2, pressure, 0.0, wall_modulus)
     return springs[0] / springs[1]

@@ -341,7 +341,11 @@ def lattice_results(directory, result):
 def front_curves(out, sizes=(32, 128, 512, 2048), rows=(32, 128)):
     """Fig. 12's curves (sound_chain.scaled_front) of condition A: the chain of
     identical balls of out (its sizes among `sizes`) and the frictionless
-    triangular lattices at p = 1e-4 with these rows, per ball of a row"""
+    triangular lattices at p = 1e-4 with these rows, per ball of a row, both
+    as compute vibration/pulse measures them (a unit pulse of the source
+    wall, the force on the detector wall) and scaled with their bulk chain's
+    K, m and l: the lattice is compared with the chain of its rows that has
+    identical springs at the walls, as in paper 003 Sec. V B"""
     curves = {}
     chain = chain_job(out)
     if chain:
@@ -359,8 +363,11 @@ def front_curves(out, sizes=(32, 128, 512, 2048), rows=(32, 128)):
         for n in [n for n in rows if n in result["rows"]]:
             masses, springs = sound_chain.lattice_row_chain(n, result["p"], 0.0, spacing=result["a"])
             t, f = sound.read_pulse(os.path.join(directory, f"lattice_normal_A_{n}.dat"))
+            # the lattice's signal as measured (a unit pulse of the wall, the force on the other
+            # wall), per ball of a row, in the units of the chain of its rows with identical springs:
+            # the walls' own springs (1.6 K here) are part of what is compared (paper Sec. V B)
             x, value = sound_chain.scaled_front(t, np.asarray(f) / result["M"], n, springs[1], masses[0],
-                                                math.sqrt(3.0) / 2.0 * result["a"], springs[0], springs[-1])
+                                                math.sqrt(3.0) / 2.0 * result["a"])
             keep = (x > -4.0) & (x < 3.0)
             step = max(1, int(keep.sum() // 80))
             curves[f"triangular lattice, {n} rows (frictionless)"] = (x[keep][::step], value[keep][::step], "points")
@@ -897,8 +904,8 @@ def figures(results, per_sample, found, figdir, out=None):
     front = front_curves(out) if out else {}
     if front:
         sound_figures.fig12_shapes(front, os.path.join(figdir, "fig12_shapes.png"),
-                                   "condition A, p = 1e-4; chains with identical wall springs (in.chain), "
-                                   "lattices per ball of a row (in.lattice)")
+                                   "condition A, p = 1e-4: chains with identical wall springs,\n"
+                                   "lattices between rigid walls (per ball of a row)")
     heights = fig5_signals(per_sample, found)
     if heights:
         sound_figures.fig5_heights(heights[1], os.path.join(figdir, "fig5_heights.png"),

@@ -127,7 +127,8 @@ def fig12_shapes(curves, path, title, limit=True):
     """Fig. 12: the coherent front of condition A in the chain's scaled
     variables, x = (c tau / l) / (c t / l)^(1/3) and y = F (c t / l)^(2/3) /
     (K l) (tau from the time (N + 1) l / c the front needs to reach the
-    wall; the paper's normalisation u'_1(0) = c), where Eq. 16 is the one
+    wall; K, m, l of the bulk chain; the paper's normalisation u'_1(0) = c:
+    sound_chain.scaled_front), where Eq. 16 is the one
     curve y = -8 Ai'(-2 x) for large N (thick black: the N -> infinity
     limit of sound_chain.airy_front); curves: label -> (x, y, style), style
     "line" (chains) or "points" (lattices)"""

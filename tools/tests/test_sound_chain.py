@@ -118,6 +118,8 @@ def test_lattice_rows_give_eqs_18_and_19():
         assert sound_chain.lattice_speed(p, 1.0) == pytest.approx(sound.triangular_lattice_speed(p, 1.0), rel=1e-12)
         # the rigid planes' spring over the rows' (frictionless): 4 3^(1/6) / 3
         assert sound_chain.lattice_walls_ratio(p) == pytest.approx(4.0 * 3.0 ** (1.0 / 6.0) / 3.0, rel=1e-12)
+        # the paper's "3^(5/6)/4 = 0.62" is its inverse
+        assert 1.0 / sound_chain.lattice_walls_ratio(p) == pytest.approx(3.0 ** (5.0 / 6.0) / 4.0, rel=1e-12)
     # paper 003 Sec. V B: K_eff = 3^(7/6) 2^(-2) p^(1/3) per ball
     _, springs = sound_chain.lattice_row_chain(3, 1e-5)
     assert springs[1] == pytest.approx(3.0 ** (7.0 / 6.0) / 4.0 * 1e-5 ** (1.0 / 3.0), rel=1e-12)
@@ -129,3 +131,19 @@ def test_effective_exponents_with_errors():
     _, slopes, errors = sound.effective_exponents_se(x, y, 0.1 * y)
     assert slopes == pytest.approx([-1.5, -1.5])
     assert errors == pytest.approx(np.full(2, math.sqrt(0.02) / math.log(2.0)))
+
+
+def test_lattice_walls_change_the_front_slightly():
+    # paper 003 Sec. V B / Fig. 12: measured as a unit pulse of the wall and
+    # the force on the other wall, the chain of rows between rigid walls
+    # (K_wall = 1.6 K) is close to the chain with identical wall springs,
+    # the closer the longer
+    ratios = []
+    for n in (32, 512):
+        t = np.linspace(0.0, 1.6 * n + 60.0, 6000)
+        walls = np.ones(n + 1)
+        walls[[0, -1]] = sound_chain.lattice_walls_ratio(1e-4)
+        lattice = sound_chain.linear_chain_signal(np.ones(n), walls, t, "A")
+        chain = sound_chain.linear_chain_signal(np.ones(n), np.ones(n + 1), t, "A")
+        ratios.append(sound.coherent_peak(t, lattice)["amplitude"] / sound.coherent_peak(t, chain)["amplitude"])
+    assert 1.0 < ratios[1] < ratios[0] < 1.15 and ratios[1] < 1.03
