@@ -9,6 +9,10 @@ importable (build/lammps-tree/python) with its library (build/lammps).
                       and where the lowered contacts sit
   spectrum_and_speed  eigenfrequencies and time-of-flight sound speed
   calibration_scan    all of it for every source and scanned parameter
+  band_top            where the band of the network ends (kernel polynomial
+                      density of states, any size of layer)
+  band_calibration    the kappa_scale that puts the band top at a given
+                      frequency (paper 000: 75 kHz on its 14.4 d layer)
 """
 import numpy as np
 try:        # the scan needs LAMMPS's Python module; its parameters (SCANS, SOURCES) do not
@@ -17,6 +21,7 @@ except ImportError:
     lammps = None
 
 from . import sound
+from .avalanche import band_from_density
 
 REFERENCE = {"U0": 1e-5, "kappa": 0.3, "cmu": 1.0, "zeta": 0.0}
 SCANS = {"U0": [1e-6, 3e-6, 1e-5, 3e-5, 1e-4, 3e-4, 1e-3],
@@ -151,3 +156,39 @@ def calibration_scan(restart, material, freq, scans, sources=SOURCES, spectrum=T
     results["spectrum_and_speed"] = speeds
     lmp.close()
     return results
+
+
+def band_top(lmp, kappa, share=0.999, fmax=150e3, bins=150, moments=512):
+    """The frequency below which `share` of the modes of the network lie
+    (stiffness hertz of glass at kappa_scale kappa, base clamped, as
+    in.modes -var method kpm) and the share of them below 75 kHz and in
+    5-45 kHz (paper 000's Fig. 3)"""
+    lmp.commands_string(f"""
+compute         band all vibration/modes stiffness hertz ${{Eglass}} ${{nuglass}} kappa_scale {kappa} &
+                fixed base method kpm bins {bins} 0 {fmax} moments {moments}
+run             0 post no
+""")
+    hist = np.array(lmp.numpy.extract_compute("band", LMP_STYLE_GLOBAL, LMP_TYPE_ARRAY), dtype=float)
+    lmp.command("uncompute band")
+    below, (top,) = band_from_density(hist[:, 0], hist[:, 1], 75e3, (share,))
+    in_5_45 = band_from_density(hist[:, 0], hist[:, 1], 45e3, ())[0] - band_from_density(hist[:, 0], hist[:, 1],
+                                                                                         5e3, ())[0]
+    return {"kappa": float(kappa), "share": share, "top": top, "below_75kHz": below, "in_5_45kHz": in_5_45}
+
+
+def band_calibration(restart, material, target=75e3, share=0.999, reference=0.3, check=None):
+    """The kappa_scale at which `share` of the modes of the layer of a
+    restart file lie below `target` Hz.  At fixed contact forces the Hertz
+    stiffness goes as kappa^(2/3) and every frequency as kappa^(1/3), so
+    the band top at `reference`, top_ref, gives kappa = reference
+    (target / top_ref)^3; the band is computed again at that kappa, and at
+    `check` (e.g. the coupling in use), as checks.  The dict that
+    `examples/avalanche/study.py calibrate --band` writes as JSON."""
+    lmp = open_layer(restart, material)
+    ref = band_top(lmp, reference, share)
+    kappa = reference * (target / ref["top"]) ** 3
+    result = {"restart": restart, "grains": int(lmp.get_natoms()), "target": target, "share": share,
+              "reference": ref, "kappa": kappa, "at_kappa": band_top(lmp, kappa, share),
+              "at_check": band_top(lmp, check, share) if check else None}
+    lmp.close()
+    return result

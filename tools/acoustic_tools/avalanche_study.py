@@ -24,7 +24,9 @@ skipped, so the production is resumed by repeating the command.
   Settings, job_name, deposit_settings, ramp_settings, tcon_settings
                         the settings of each kind of job and its name
   Runner                runs the jobs (mpirun, pieces, the deposit first)
-  PRODUCTION            the sets behind RESULTS.md, as lists of jobs
+  PRODUCTION            the production sets, as lists of jobs: those of issue 42
+                        at the calibrated coupling KAPPA, and those behind
+                        RESULTS.md run before the calibration (KAPPA_BEFORE)
   record                job.json and result.json of the finished jobs into record/
   main                  the command line: run, job, demo, collect, figures, record, calibrate
 """
@@ -39,7 +41,15 @@ from . import study
 from .lammps_log import wall_time
 
 MARGIN = 50               # d of bare base on each side of a free-ends layer
-KAPPA = 0.3               # kappa_scale of the ensembles (RESULTS.md)
+# The coupling of the paper-000 study: the kappa_scale at which the band of
+# the 14.4 d free-ends layer (paper 000's Fig. 3) ends at 75 kHz (99.9 % of
+# its modes below), `study.py calibrate RESTART OUT.json --band 75e3` on that
+# layer's deposit (examples/avalanche/README.md, "The coupling").
+KAPPA = 0.17
+# The coupling of the sets run before that calibration (RESULTS.md: a
+# sensitivity study now).  Job names carry _k<kappa> for any other coupling,
+# so that no job of the calibrated study takes the name of one of these.
+KAPPA_BEFORE = 0.3
 SEEDS = (4871, 1, 2, 3)   # the packings of the periodic set
 
 
@@ -83,19 +93,26 @@ def packing_name(s):
 def job_name(s):
     """The directory name of a job (readable; never parsed)."""
     name = packing_name(s) + "_" + ("deposit" if s["kind"] == "deposit" else s["tag"])
-    if s["kind"] != "deposit" and float(s.get("kappa", KAPPA)) != KAPPA:
+    if s["kind"] != "deposit" and float(s.get("kappa", KAPPA_BEFORE)) != KAPPA_BEFORE:
         name += f"_k{_g(s['kappa'])}"
     if s.get("switch_on") is not None:
         name += f"_on{_g(s['switch_on'])}"
+    if s["kind"] != "deposit" and s.get("window") is not None:
+        name += f"_w{_g(s['window'])}"
     return name
 
 
 def geometry_variables(s):
     """-var values of the geometry: base length L, covered span and the
-    observation window (the middle half of a free-ends layer)."""
+    observation window, centred on the layer: `window` d long (s["window"],
+    paper 000's 0.4 m is 571 d) or by default the middle half of a
+    free-ends layer; a periodic layer is observed whole."""
     if s["free"]:
         L = s["layer"] + 2 * MARGIN
-        lo = (L - s["layer"] / 2) / (2 * L)
+        window = s.get("window") or s["layer"] / 2
+        if not 0 < window <= s["layer"]:
+            raise ValueError(f"window {window:g} d must lie within the layer ({s['layer']:g} d)")
+        lo = (L - window) / (2 * L)
         return {"L": _g(L), "span": f"{s['layer'] / L:.6f}", "obslo": f"{lo:.6f}", "obshi": f"{1 - lo:.6f}"}
     return {"L": _g(s["layer"]), "span": "1", "obslo": "0", "obshi": "1"}
 
@@ -106,16 +123,19 @@ def deposit_settings(packing):
 
 
 def ramp_settings(packing, freq, kappa=KAPPA, source="bottom", theta0=None, tfollow=1.2, tsettle=0.5,
-                  switch_on=None, piece="auto", dumpevery=50, dumplocal=1):
+                  switch_on=None, piece="auto", dumpevery=50, dumplocal=1, window=None, thetamax=30.0):
     """A tilt ramp of a packing at freq Hz; theta0 by default 10 deg, 4 deg
-    for H > 10 d at 70 kHz (a thick layer creeps and flows low)."""
+    for H > 10 d at 70 kHz (at KAPPA_BEFORE a thick layer creeps and flows
+    low); window: the observation window in d (geometry_variables)."""
     freq = float(freq)
     if theta0 is None:
         theta0 = 4.0 if packing["H"] > 10 and freq > 0 else 10.0
     s = dict(packing, kind="ramp", tag=f"f{_g(freq / 1e3)}", freq=freq, kappa=float(kappa), source=source,
-             theta0=float(theta0), tfollow=float(tfollow), tsettle=float(tsettle), thetamax=30.0,
+             theta0=float(theta0), tfollow=float(tfollow), tsettle=float(tsettle), thetamax=float(thetamax),
              switch_on=None if switch_on is None else float(switch_on), piece=piece,
              dumpevery=dumpevery, dumplocal=dumplocal)
+    if window is not None:
+        s["window"] = float(window)
     s["deposit"] = job_name(deposit_settings(packing))
     return s
 
@@ -125,7 +145,7 @@ def tcon_settings(ramp, theta, tuniform=None):
     last static state, followed like any angle of the ramp."""
     tag = f"tcon_{ramp['tag']}_{theta:.1f}" + (f"_u{_g(tuniform)}" if tuniform is not None else "")
     s = {k: ramp[k] for k in ("H", "seed", "free", "layer", "Edem", "rest", "freq", "kappa", "source", "tfollow",
-                              "deposit")}
+                              "deposit", "window") if k in ramp}
     s.update(kind="tcon", tag=tag, ramp_tag=ramp["tag"], ramp=job_name(ramp), theta=float(f"{theta:.1f}"),
              tuniform=None if tuniform is None else float(tuniform), switch_on=None)
     return s
@@ -340,60 +360,129 @@ class Runner:
         return results
 
 
-# The production behind RESULTS.md: each set a list of (what, arguments) in
-# the order they run; "ramp" takes ramp_settings' arguments, "tcon" a ramp's
-# and Runner.tcon's.
+# The production sets: each a list of (what, arguments) in the order they
+# run; "ramp" takes ramp_settings' arguments, "tcon" a ramp's and
+# Runner.tcon's.  First the sets of issue 42, at the calibrated coupling
+# KAPPA (examples/avalanche/README.md, "Production sets"), then those run
+# before the calibration at KAPPA_BEFORE (RESULTS.md).
+THICKNESSES = (3, 6, 8.7, 11.4, 14.4)   # H/d of paper 000's Fig. 7
+PACKINGS = (1, 2, 3, 4)                 # the deposit seeds of the free-ends packings
+SENSITIVITY = (0.14, 0.21)              # the calibration's +-5 kHz reading of the band top
+SENSITIVITY_H = 14.4                    # ... at the layer of the calibration
+PAPER_LAYER, PAPER_WINDOW = 2000, 571   # d: paper 000's layers (Table 1's N) and its 0.4 m window
+TABLE1 = ((3, 8000), (14.4, 32000))     # (H/d, grains) of paper 000's Table 1 rows measured
+TABLE1_THETA = 10.0                     # deg: the angle of the Table 1 runs, below every theta_m
+GRAINS_PER_AREA = 0.79 * 4 / 3.141592653589793 / (1 + 0.2 ** 2 / 3)   # in.deposit's grains per d^2 (poly 0.2)
+
+
 def _periodic(H, seed, layer):
     return packing_settings(H, seed, free=0, layer=layer)
+
+
+def table1_layer(H, grains):
+    """The layer length (d, whole) whose deposit holds about `grains` grains
+    at H/d (in.deposit fills H x layer at GRAINS_PER_AREA; the lattice rounds up
+    to whole rows)."""
+    return float(round(grains / (H * GRAINS_PER_AREA)))
+
+
+def table1_settings(H, grains, freq):
+    """One Table 1 run: the pre-ramp to TABLE1_THETA - 0.5 deg, a hold of at
+    most 10 ms, then that angle for exactly 0.1 s (tfollow 0), no dumps, one
+    process: the same simulated 0.31 s at 0 and 70 kHz, so that the wall
+    times give paper 000's (t70 - t0)/t70."""
+    return ramp_settings(packing_settings(H, 1, layer=table1_layer(H, grains)), freq, theta0=TABLE1_THETA,
+                         thetamax=TABLE1_THETA, tfollow=0, tsettle=0.01, piece=0, dumpevery=0, dumplocal=0)
 
 
 def production(name):
     """The jobs of one production set: [("ramp", settings) or ("tcon", (ramp settings, options))]."""
     jobs = []
-    if name == "periodic":
-        for s in SEEDS:
-            jobs += [("ramp", ramp_settings(_periodic(6, s, 80), f)) for f in (0, 70e3)]
-            jobs += [("ramp", ramp_settings(_periodic(14.4, s, 40), 0)),
-                     ("ramp", ramp_settings(_periodic(14.4, s, 40), 70e3, theta0=6))]
-            jobs += [("ramp", ramp_settings(_periodic(3, s, 80), f)) for f in (0, 70e3)]
-    elif name == "tcon":
-        for s in SEEDS:
-            jobs += [("tcon", (ramp_settings(_periodic(6, s, 80), f), {"angles": (19.0,)})) for f in (0, 70e3)]
-        for s in (1, 2, 3, 4):
-            jobs += [("tcon", (ramp_settings(packing_settings(6, s), f), {"steps": (1,), "angles": (19.0,)}))
-                     for f in (0, 70e3)]
-        for s in SEEDS:
-            jobs += [("tcon", (ramp_settings(_periodic(14.4, s, 40), f, theta0=6 if f else None), {}))
-                     for f in (0, 70e3)]
-        for H in (11.4, 14.4):
-            for s in (1, 2, 3, 4):
-                jobs += [("tcon", (ramp_settings(packing_settings(H, s), f), {})) for f in (0, 70e3)]
-    elif name == "free":
+    free = packing_settings
+    if name == "thickness":
+        # issue 42: the five thicknesses, four free-ends packings each, at the
+        # calibrated coupling, ultrasound on from the start (its pre-ramp too)
         for f in (0, 70e3):
-            for H in (3, 6, 14.4, 8.7, 11.4):
-                jobs += [("ramp", ramp_settings(packing_settings(H, s), f)) for s in (1, 2, 3, 4)]
-    elif name == "more":
-        for H in (8.7, 11.4):
-            for s in SEEDS:
-                jobs += [("ramp", ramp_settings(_periodic(H, s, 40), 0)),
-                         ("ramp", ramp_settings(_periodic(H, s, 40), 70e3, theta0=6))]
-    elif name == "kappa":
-        for s in (1, 2):
-            jobs += [("ramp", ramp_settings(_periodic(6, s, 80), 70e3, kappa=k)) for k in (0.1, 0.2, 1)]
-    elif name == "kappa_free":
-        jobs += [("ramp", ramp_settings(packing_settings(8.7, s), 70e3, kappa=k)) for s in (1, 2) for k in (0.1, 0.2)]
-        jobs += [("ramp", ramp_settings(packing_settings(8.7, s), 70e3, kappa=0.1)) for s in (3, 4)]
-    elif name == "switch_on":
-        jobs += [("ramp", ramp_settings(packing_settings(14.4, s), 70e3, switch_on=9.5)) for s in (1, 2, 3, 4)]
-        jobs += [("ramp", ramp_settings(packing_settings(14.4, s), 70e3, kappa=0.17, switch_on=10.5)) for s in (1, 3)]
-        jobs += [("ramp", ramp_settings(packing_settings(6, s), 70e3, kappa=0.17, switch_on=13)) for s in (1, 2, 3, 4)]
-        jobs += [("ramp", ramp_settings(packing_settings(14.4, s), 70e3, kappa=0.17, switch_on=10.5)) for s in (2, 4)]
+            for H in (6, 14.4, 3, 8.7, 11.4):
+                jobs += [("ramp", ramp_settings(free(H, s), f, theta0=10)) for s in PACKINGS]
+    elif name == "tcon_cal":
+        # t_con at 0 and 70 kHz at 6 d (19 deg), 11.4 and 14.4 d, 1, 2, 3 deg
+        # above each packing's theta_m at both frequencies
+        for H in (6, 11.4, 14.4):
+            for s in PACKINGS:
+                jobs += [("tcon", (ramp_settings(free(H, s), f, theta0=10),
+                                   {"steps": (1, 2, 3), "angles": (19.0,) if H == 6 else ()})) for f in (0, 70e3)]
+    elif name == "sensitivity":
+        # the 70 kHz shift at 14.4 d with the band top read 5 kHz lower or
+        # higher (kappa_scale 0.14, 0.21); the 0 Hz ramps are the thickness set's
+        for k in SENSITIVITY:
+            jobs += [("ramp", ramp_settings(free(SENSITIVITY_H, s), 70e3, kappa=k, theta0=10)) for s in PACKINGS]
+    elif name == "paper_length":
+        # one packing at 6 d and one at 14.4 d, 2000 d long, observed over
+        # paper 000's 571 d, both frequencies, in pieces (Runner.ramp)
+        for H in (6, 14.4):
+            jobs += [("ramp", ramp_settings(free(H, 1, layer=PAPER_LAYER), f, theta0=10, window=PAPER_WINDOW))
+                     for f in (0, 70e3)]
+    elif name == "table1":
+        jobs += [("ramp", table1_settings(H, n, f)) for H, n in TABLE1 for f in (0, 70e3)]
+    elif name in ("periodic", "tcon", "free", "more", "kappa", "kappa_free", "switch_on"):
+        jobs = _before(name)
     else:
         raise ValueError(f"unknown production set {name}")
     return jobs
 
 
-PRODUCTION = ("periodic", "tcon", "free", "more", "kappa", "kappa_free", "switch_on")
+def _before(name):
+    """The sets run before the calibration, at KAPPA_BEFORE unless they say
+    otherwise (RESULTS.md; kept so that its numbers can be rebuilt)."""
+    def ramp(packing, freq, **options):
+        return ramp_settings(packing, freq, **dict({"kappa": KAPPA_BEFORE}, **options))
+
+    jobs = []
+    if name == "periodic":
+        for s in SEEDS:
+            jobs += [("ramp", ramp(_periodic(6, s, 80), f)) for f in (0, 70e3)]
+            jobs += [("ramp", ramp(_periodic(14.4, s, 40), 0)),
+                     ("ramp", ramp(_periodic(14.4, s, 40), 70e3, theta0=6))]
+            jobs += [("ramp", ramp(_periodic(3, s, 80), f)) for f in (0, 70e3)]
+    elif name == "tcon":
+        for s in SEEDS:
+            jobs += [("tcon", (ramp(_periodic(6, s, 80), f), {"angles": (19.0,)})) for f in (0, 70e3)]
+        for s in (1, 2, 3, 4):
+            jobs += [("tcon", (ramp(packing_settings(6, s), f), {"steps": (1,), "angles": (19.0,)}))
+                     for f in (0, 70e3)]
+        for s in SEEDS:
+            jobs += [("tcon", (ramp(_periodic(14.4, s, 40), f, theta0=6 if f else None), {}))
+                     for f in (0, 70e3)]
+        for H in (11.4, 14.4):
+            for s in (1, 2, 3, 4):
+                jobs += [("tcon", (ramp(packing_settings(H, s), f), {})) for f in (0, 70e3)]
+    elif name == "free":
+        for f in (0, 70e3):
+            for H in (3, 6, 14.4, 8.7, 11.4):
+                jobs += [("ramp", ramp(packing_settings(H, s), f)) for s in (1, 2, 3, 4)]
+    elif name == "more":
+        for H in (8.7, 11.4):
+            for s in SEEDS:
+                jobs += [("ramp", ramp(_periodic(H, s, 40), 0)),
+                         ("ramp", ramp(_periodic(H, s, 40), 70e3, theta0=6))]
+    elif name == "kappa":
+        for s in (1, 2):
+            jobs += [("ramp", ramp(_periodic(6, s, 80), 70e3, kappa=k)) for k in (0.1, 0.2, 1)]
+    elif name == "kappa_free":
+        jobs += [("ramp", ramp(packing_settings(8.7, s), 70e3, kappa=k)) for s in (1, 2) for k in (0.1, 0.2)]
+        jobs += [("ramp", ramp(packing_settings(8.7, s), 70e3, kappa=0.1)) for s in (3, 4)]
+    elif name == "switch_on":
+        jobs += [("ramp", ramp(packing_settings(14.4, s), 70e3, switch_on=9.5)) for s in (1, 2, 3, 4)]
+        jobs += [("ramp", ramp(packing_settings(14.4, s), 70e3, kappa=0.17, switch_on=10.5)) for s in (1, 3)]
+        jobs += [("ramp", ramp(packing_settings(6, s), 70e3, kappa=0.17, switch_on=13)) for s in (1, 2, 3, 4)]
+        jobs += [("ramp", ramp(packing_settings(14.4, s), 70e3, kappa=0.17, switch_on=10.5)) for s in (2, 4)]
+    return jobs
+
+
+# issue 42's sets at KAPPA first, then those of RESULTS.md at KAPPA_BEFORE
+PRODUCTION = ("thickness", "tcon_cal", "sensitivity", "paper_length", "table1",
+              "periodic", "tcon", "free", "more", "kappa", "kappa_free", "switch_on")
 
 
 def record(out, dest):
@@ -435,7 +524,7 @@ def _run(args):
     unknown = [name for name in args.sets if name not in PRODUCTION]
     if unknown:
         sys.exit(f"run: unknown set {unknown[0]} ({', '.join(PRODUCTION)})")
-    for name in args.sets or ["periodic"]:
+    for name in args.sets or ["thickness"]:
         for what, job in production(name):
             if what == "ramp":
                 runner.ramp(job)
@@ -447,7 +536,8 @@ def _run(args):
 
 def _run_arguments(p, here):
     p.add_argument("sets", nargs="*", metavar="SET",
-                   help="periodic (default), tcon, free, more, kappa, kappa_free, switch_on "
+                   help="at the calibrated coupling: thickness (default), tcon_cal, sensitivity, paper_length, "
+                        "table1; before the calibration: periodic, tcon, free, more, kappa, kappa_free, switch_on "
                         "(examples/avalanche/README.md)")
     _runner_options(p, here)
 
@@ -461,7 +551,9 @@ def _job_arguments(p, here):
     p.add_argument("--layer", type=float, help="layer length / d (default 400 with free ends, 80 periodic)")
     p.add_argument("--edem", type=float, help="Young's modulus of the grains (Pa; default in.material's)")
     p.add_argument("--rest", type=float, help="restitution (default in.material's)")
-    p.add_argument("--kappa", type=float, default=KAPPA, help=f"kappa_scale (default {KAPPA})")
+    p.add_argument("--kappa", type=float, default=KAPPA, help=f"kappa_scale (default {KAPPA}, the calibrated one)")
+    p.add_argument("--window", type=float, help="observation window / d, centred (default: half the layer; "
+                                                "paper 000's 0.4 m is 571)")
     p.add_argument("--source", choices=("bottom", "base"), default="bottom")
     p.add_argument("--theta0", type=float, help="first angle (default 10, 4 for H > 10 d at 70 kHz)")
     p.add_argument("--tfollow", type=float, default=1.2)
@@ -478,7 +570,8 @@ def _job(args):
     packing = packing_settings(args.H, args.seed, free=0 if args.periodic else 1, layer=args.layer, Edem=args.edem,
                                rest=args.rest)
     ramp = ramp_settings(packing, args.freq, kappa=args.kappa, source=args.source, theta0=args.theta0,
-                         tfollow=args.tfollow, tsettle=args.tsettle, switch_on=args.switch_on, piece=args.piece)
+                         tfollow=args.tfollow, tsettle=args.tsettle, switch_on=args.switch_on, piece=args.piece,
+                         window=args.window)
     runner = Runner(args.build, args.out, args.decks, args.np, max_pieces=args.max_pieces)
     if args.tcon:
         runner.tcon(ramp, args.tcon_steps, args.tcon_angles, args.tuniform)
@@ -527,8 +620,8 @@ def _demo(args):
             time.sleep(0.5)
 
     out = os.path.abspath(args.out)
-    print(f"avalanche demo: H = {args.H:g} d, L = {args.L:g} d, periodic, source {args.source}, {args.np} MPI ranks, "
-          f"outputs in {out}", flush=True)
+    print(f"avalanche demo: H = {args.H:g} d, L = {args.L:g} d, periodic, source {args.source}, kappa_scale {KAPPA:g} "
+          f"(the calibrated coupling), {args.np} MPI ranks, outputs in {out}", flush=True)
     runner = Runner(args.build, out, args.decks, args.np, say=lambda line: None, progress=progress)
     packing = packing_settings(args.H, args.seed, free=0, layer=args.L)
     results = []
@@ -599,10 +692,25 @@ def _calibrate_arguments(p, here):
     p.add_argument("--sources", choices=SOURCES, nargs="+", default=list(SOURCES))
     p.add_argument("--no-spectrum", action="store_true",
                    help="no eigenmodes and pulse (dense: too costly for thousands of grains)")
+    p.add_argument("--band", type=float, metavar="F",
+                   help="instead of the scan: the kappa_scale at which 99.9 %% of the modes lie below F Hz "
+                        "(kernel polynomial density of states; paper 000: 75e3 on the 14.4 d layer)")
 
 
 def _calibrate(args):
-    from .avalanche_calibration import SCANS, calibration_scan
+    from .avalanche_calibration import SCANS, band_calibration, calibration_scan
+    if args.band:
+        result = band_calibration(os.path.abspath(args.restart), os.path.join(args.decks, "in.material"), args.band,
+                                  check=KAPPA)
+        with open(args.output, "w") as handle:
+            json.dump(result, handle, indent=1)
+        ref, at, check = result["reference"], result["at_kappa"], result["at_check"]
+        print(f"calibrate: 99.9 % of the modes below {ref['top'] / 1e3:.1f} kHz at kappa_scale {ref['kappa']:g}, "
+              f"below {args.band / 1e3:g} kHz at kappa_scale {result['kappa']:.3f} (computed again: "
+              f"{at['top'] / 1e3:.1f} kHz); at the study's {KAPPA:g}: {check['top'] / 1e3:.1f} kHz, "
+              f"{100 * check['below_75kHz']:.2f} % of the modes below 75 kHz, {100 * check['in_5_45kHz']:.0f} % "
+              f"in 5-45 kHz")
+        return 0
     if args.values and not args.scan:
         sys.exit("calibrate: --values needs --scan")
     scans = {k: (v[::len(v) - 1] if args.quick else v) for k, v in SCANS.items() if args.scan in (None, k)}
@@ -616,7 +724,8 @@ def _calibrate(args):
 
 
 COMMANDS = {
-    "run": (_run, "the production jobs behind RESULTS.md, set by set; resumable: repeat until all are there",
+    "run": (_run, "the production jobs, set by set (issue 42's at the calibrated coupling, RESULTS.md's before it); "
+                  "resumable: repeat until all are there",
             _run_arguments),
     "job": (_job, "one ramp of one packing at one frequency (or, with --tcon, its t_con runs)", _job_arguments),
     "demo": (_demo, "the main job (./run.sh demo): H = 6 d, 80 d, periodic, 0 and 70 kHz", _demo_arguments),

@@ -23,7 +23,11 @@ import pytest
 LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "avalanche")
 STUDY = os.path.join(HERE, "study.py")
-RAMP = {"0": "periodic20_H3_s7_f0", "70e3": "periodic20_H3_s7_f70"}      # the job directories
+# kappa_scale 0.3, not the study's calibrated 0.17: the angles below (a layer
+# that creeps from 14 deg and flows at the piece boundaries) were chosen at
+# that coupling, and what is tested, the pieces, does not depend on it
+KAPPA = "0.3"
+RAMP = {"0": "periodic20_H3_s7_f0", "70e3": "periodic20_H3_s7_f70"}      # the job directories (at 0.3)
 DEPOSIT = "periodic20_H3_s7_deposit"
 ANGLE = re.compile(r"^angle +([0-9.]+) deg: (\w+)")
 
@@ -35,7 +39,8 @@ def build_dir():
 def run_job(out, freq="0", theta0="16", ranks="1", *options):
     """One ramp of a small periodic layer (3 d thick, 20 d long)."""
     done = subprocess.run([sys.executable, STUDY, "job", "3", "7", freq, "--build", build_dir(), "--out", str(out),
-                           "--np", ranks, "--periodic", "--layer", "20", "--theta0", theta0, *options],
+                           "--np", ranks, "--periodic", "--layer", "20", "--theta0", theta0, "--kappa", KAPPA,
+                           *options],
                           capture_output=True, text=True, timeout=900)
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     return done.stdout

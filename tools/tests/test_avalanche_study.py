@@ -1,0 +1,107 @@
+"""acoustic_tools.avalanche_study: the production sets of issue 42 at the
+calibrated coupling, the names of their jobs beside those run before the
+calibration, and the observation window of the decks (no LAMMPS)."""
+import os
+
+import pytest
+
+from acoustic_tools import avalanche_study as a
+
+
+def test_the_calibrated_coupling_is_the_default():
+    assert a.KAPPA == 0.17 and a.KAPPA_BEFORE == 0.3
+    assert a.ramp_settings(a.packing_settings(6, 1), 70e3)["kappa"] == a.KAPPA
+    # in.avalanche and in.modes take the same default
+    here = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "avalanche")
+    for deck in ("in.avalanche", "in.modes"):
+        defaults = [line.split()[3] for line in open(os.path.join(here, deck))
+                    if line.split()[:3] == ["variable", "kappa", "index"]]
+        assert defaults == [f"{a.KAPPA:g}"], deck
+
+
+def test_no_calibrated_job_takes_the_name_of_one_run_before():
+    packing = a.packing_settings(6, 1)
+    before = {a.job_name(job) for name in ("free", "tcon", "switch_on", "kappa_free") for what, job in
+              a.production(name) if what == "ramp"}
+    now = {a.job_name(job) for name in ("thickness", "sensitivity", "paper_length", "table1") for what, job in
+           a.production(name)}
+    assert not before & now
+    assert a.job_name(a.ramp_settings(packing, 70e3)) == "free400_H6_s1_f70_k0.17"
+    assert a.job_name(a.ramp_settings(packing, 70e3, kappa=0.3)) == "free400_H6_s1_f70"   # the record's name
+
+
+def test_thickness_set():
+    jobs = a.production("thickness")
+    assert all(what == "ramp" for what, _ in jobs)
+    settings = [s for _, s in jobs]
+    assert len(settings) == 5 * 4 * 2
+    assert {(s["H"], s["seed"], s["freq"]) for s in settings} == {
+        (float(H), seed, f) for H in a.THICKNESSES for seed in (1, 2, 3, 4) for f in (0.0, 70e3)}
+    assert {s["kappa"] for s in settings} == {a.KAPPA}
+    assert all(s["free"] == 1 and s["layer"] == 400 and s["switch_on"] is None and s["theta0"] == 10
+               for s in settings)
+
+
+def test_tcon_set_at_the_same_distance_above_theta_m():
+    jobs = a.production("tcon_cal")
+    assert {(ramp["H"], ramp["freq"]) for _, (ramp, _) in jobs} == {
+        (H, f) for H in (6.0, 11.4, 14.4) for f in (0.0, 70e3)}
+    for _, (ramp, options) in jobs:
+        assert options["steps"] == (1, 2, 3) and ramp["kappa"] == a.KAPPA
+        assert options["angles"] == ((19.0,) if ramp["H"] == 6 else ())
+    # the t_con runs go on from the thickness set's ramps (same job)
+    thickness = {a.job_name(s) for _, s in a.production("thickness")}
+    assert {a.job_name(ramp) for _, (ramp, _) in jobs} <= thickness
+
+
+def test_sensitivity_set_pairs_with_the_thickness_set():
+    settings = [s for _, s in a.production("sensitivity")]
+    assert sorted({s["kappa"] for s in settings}) == [0.14, 0.21]
+    assert {s["H"] for s in settings} == {14.4} and {s["freq"] for s in settings} == {70e3}
+    # the same deposits as the thickness set: its 0 Hz ramps are the reference
+    deposits = {s["deposit"] for _, s in a.production("thickness") if s["H"] == 14.4}
+    assert {s["deposit"] for s in settings} == deposits
+
+
+def test_paper_length_layers_observe_571_d_in_the_middle():
+    settings = [s for _, s in a.production("paper_length")]
+    assert {(s["H"], s["freq"]) for s in settings} == {(H, f) for H in (6.0, 14.4) for f in (0.0, 70e3)}
+    for s in settings:
+        assert s["layer"] == 2000 and s["window"] == 571 and s["piece"] == "auto"
+        g = a.geometry_variables(s)
+        L = 2000 + 2 * a.MARGIN
+        lo, hi = float(g["obslo"]) * L, float(g["obshi"]) * L
+        assert hi - lo == pytest.approx(571, abs=5e-3)   # 6 decimals of the box length and (lo + hi) / 2 == pytest.approx(L / 2)
+        assert a.job_name(s).endswith("_w571")
+    # without a window: the middle half, as before (the record's jobs)
+    g = a.geometry_variables(a.packing_settings(6, 1))
+    assert float(g["obshi"]) - float(g["obslo"]) == pytest.approx(200 / 500, abs=1e-6)
+    with pytest.raises(ValueError):
+        a.geometry_variables(dict(a.packing_settings(6, 1), window=500))
+
+
+def test_tcon_runs_keep_the_window_of_their_ramp():
+    ramp = a.ramp_settings(a.packing_settings(6, 1, layer=2000), 70e3, window=571)
+    s = a.tcon_settings(ramp, 19.0)
+    assert s["window"] == 571 and a.geometry_variables(s) == a.geometry_variables(ramp)
+
+
+def test_table1_runs_the_same_simulated_time_at_both_frequencies():
+    settings = [s for _, s in a.production("table1")]
+    assert [(s["H"], s["freq"]) for s in settings] == [(3.0, 0.0), (3.0, 70e3), (14.4, 0.0), (14.4, 70e3)]
+    for s in settings:
+        # one angle, held exactly the window (no follow), no dumps, one process
+        assert s["theta0"] == s["thetamax"] == a.TABLE1_THETA and s["tfollow"] == 0
+        assert s["dumpevery"] == 0 and s["dumplocal"] == 0 and s["piece"] == 0
+    # in.deposit's count of grains for these lengths: the paper's N
+    for H, grains in a.TABLE1:
+        assert round(H * a.table1_layer(H, grains) * a.GRAINS_PER_AREA) == pytest.approx(grains, rel=2e-3)
+
+
+def test_every_set_is_known_and_the_sets_before_keep_their_coupling():
+    for name in a.PRODUCTION:
+        assert a.production(name), name
+    for name in ("periodic", "free", "more"):
+        assert {s["kappa"] for _, s in a.production(name)} == {a.KAPPA_BEFORE}
+    with pytest.raises(ValueError):
+        a.production("nothing")
