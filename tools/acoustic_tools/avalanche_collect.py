@@ -43,6 +43,7 @@ import numpy as np
 from . import avalanche as av
 from . import avalanche_figures as figs
 from . import study
+from .avalanche_study import KAPPA, KAPPA_BEFORE
 from .lammps_output import read_dump
 from .stats import mean_sd
 
@@ -58,7 +59,10 @@ PAPER_TCON_ANGLE_H6 = 19.0
 DEFAULT_TUNIFORM = 0.01   # s, in.avalanche's uniform hold (its thold)
 FOLLOW = 1.3              # s, twin + tfollow: how long a t_con run follows its angle
 DEFAULT_LAYER = 400       # d, paper 000's free-ends layer
-SET_KAPPA = 0.3           # kappa_scale of the ensembles (avalanche_study's default)
+# kappa_scale of the ensembles in the record so far: the sets run before the
+# calibration (avalanche_study.KAPPA_BEFORE); KAPPA, the calibrated coupling
+# of the study (avalanche_study.KAPPA), is drawn beside them
+SET_KAPPA = KAPPA_BEFORE
 # the kappa_scale studies: 70 kHz ramps at another kappa_scale, beside the
 # same packings' ramps at SET_KAPPA; one study per boundary condition
 # (free: 0 periodic, 1 free ends): (name of its table and figure, label)
@@ -527,10 +531,10 @@ def thetam_table(rows):
 
 
 def tcon_rows(all_ens, label, free):
-    """Rows ("H<H>_<f>kHz[_free_ends]", theta, t_con) of Fig. 8: theta_m and
-    the t_con runs of every packing at H = 6, 11.4 and 14.4 d, each geometry
-    once (label: the first geometry; free: the free-ends one, may be the
-    same)."""
+    """Rows ("H<H>_<f>kHz[_free_ends]", theta, t_con, kind) of Fig. 8:
+    theta_m (kind "thetam": the ramp's own flow) and the t_con runs (kind
+    "run") of every packing at H = 6, 11.4 and 14.4 d, each geometry once
+    (label: the first geometry; free: the free-ends one, may be the same)."""
     geometries = [(label, "_free_ends" if label.startswith("free") else "")]
     if free and free != label:
         geometries.append((free, "_free_ends"))
@@ -539,15 +543,16 @@ def tcon_rows(all_ens, label, free):
         for H in (6.0, 11.4, 14.4):
             for p in all_ens.get(geometry, {}).get(H, []):
                 for tag in ("f0", "f70"):
-                    for th, t in [(p[tag][0], p[tag][1])] + p[f"tcon_{tag}"]:
+                    runs = [(p[tag][0], p[tag][1], "thetam")] + [(th, t, "run") for th, t in p[f"tcon_{tag}"]]
+                    for th, t, kind in runs:
                         if np.isfinite(th) and np.isfinite(t):
-                            rows.append((f"H{H:g}_{tag[1:]}kHz{suffix}", th, t))
+                            rows.append((f"H{H:g}_{tag[1:]}kHz{suffix}", th, t, kind))
     return rows
 
 
 def tcon_table_lines(all_ens, label, free):
-    """The rows of tcon_rows as lines "H<H>_<f>kHz[_free_ends] theta t_con"."""
-    return [f"{name} {th:g} {t:g}\n" for name, th, t in tcon_rows(all_ens, label, free)]
+    """The rows of tcon_rows as lines "H<H>_<f>kHz[_free_ends] theta t_con kind"."""
+    return [f"{name} {th:g} {t:g} {kind}\n" for name, th, t, kind in tcon_rows(all_ens, label, free)]
 
 
 def _table_text(rows):
@@ -627,7 +632,7 @@ def write_tables(data, tables):
             f.write(_table_text(rows))
     if data["label"] is not None:
         with open(os.path.join(tables, "tcon.txt"), "w") as f:
-            f.writelines(f"{name} {th:g} {t:g}\n" for name, th, t in data["tcon"])
+            f.writelines(f"{name} {th:g} {t:g} {kind}\n" for name, th, t, kind in data["tcon"])
             f.writelines(f"{name} {theta:g} {t}\n" for name, theta, t in data["paper_tcon"])
     for name, rows in data["kappa_tables"].items():
         with open(os.path.join(tables, f"{name}.txt"), "w") as f:
@@ -652,11 +657,13 @@ def draw_figures(data, figdir):
 
     label = data["label"]
     if label is not None:
-        couplings = [(rows, f"kappa_scale {kappa_scale:g}, switched on at rest")
+        couplings = [(rows, f"kappa_scale {kappa_scale:g}" + (" (the calibrated coupling)" if kappa_scale == KAPPA
+                                                               else "") + ", switched on at rest")
                      for kappa_scale, rows in data["couplings_tables"]]
+        coupling = f"kappa_scale {SET_KAPPA:g}" + (" (run before the calibration)" if SET_KAPPA != KAPPA else "")
         figs.fig_thetam(out("fig7_thetam.png"), data["thetam"], label, data["thetam_free"], data["free"], couplings,
-                        dpi=80)
-        figs.fig_tcon(out("fig8_tcon.png"), data["tcon"] + data["paper_tcon"], dpi=80)
+                        dpi=100, coupling=coupling)
+        figs.fig_tcon(out("fig8_tcon.png"), data["tcon"] + data["paper_tcon"], dpi=100, coupling=coupling)
         by_h = data["ensembles"][label]
         for H in (6.0, 14.4):
             packs = by_h.get(H, [])

@@ -9,12 +9,13 @@ line draws them from files:
         (--hist, the file of in.modes) and/or rebuilt from a dump and its contacts dump
     python3 -m acoustic_tools.avalanche_figures sigma  RUN.series --theta 19.5 [RUN2.series --theta 15 ...] -o fig6.png
         Figs. 6 / 9: sigma_1, sigma_2 against the time since the tilt to theta
-    python3 -m acoustic_tools.avalanche_figures thetam TABLE -o fig7.png
+    python3 -m acoustic_tools.avalanche_figures thetam TABLE -o fig7.png [--coupling-of-70 TEXT]
         Fig. 7: theta_m against H/d; TABLE lines "H/d theta0 sd0 theta70 sd70"
         (ensemble means and standard deviations; optional 6th and 7th columns:
         paper 000's values, nan if unknown); --free TABLE2 adds the free-ends ensembles
-    python3 -m acoustic_tools.avalanche_figures tcon   TABLE -o fig8.png
-        Fig. 8: t_con against theta; TABLE lines "label theta t_con" (one per run)
+    python3 -m acoustic_tools.avalanche_figures tcon   TABLE -o fig8.png [--coupling TEXT]
+        Fig. 8: t_con against theta, one panel per H/d; TABLE lines "H<H>_<f>kHz theta t_con [thetam|run]"
+        (one per run; thetam: the ramp's flow at theta_m, a star; paper000_...: paper 000's values)
     python3 -m acoustic_tools.avalanche_figures kappa  TABLE -o kappa_shift.png
         the 70 kHz shift against kappa_scale; TABLE lines "kappa H seed shift mu_factor
         onset_shift geometry"
@@ -117,43 +118,64 @@ def fig_sigma(path, runs, dpi=110):
     return _save(fig, path, dpi)
 
 
-def fig_thetam(path, table, label="this code", free=None, free_label="free ends", couplings=(), dpi=110):
+# paper 000's colours (its Figs. 7 and 8): blue without, orange with 70 kHz
+COLOUR = {0: "tab:blue", 70: "tab:orange"}
+READABLE = {"font.size": 13, "axes.labelsize": 14, "axes.titlesize": 14, "legend.fontsize": 11.5,
+            "xtick.labelsize": 12, "ytick.labelsize": 12}
+
+
+def fig_thetam(path, table, label="this code", free=None, free_label="free ends", couplings=(), dpi=110,
+               coupling=None):
     """Fig. 7 from a table of ensembles: rows "H/d theta0 sd0 theta70 sd70
     [paper0 paper70]" (means and standard deviations over the packings, nan
-    where missing), named label; paper 000's trend (20 deg at 3 d, -0.26
-    deg/d, 2 deg lower with 70 kHz) is drawn as dashed lines.  free: a
-    second geometry (free ends, named free_label) in the same format, drawn
-    with open squares; couplings: (rows "H/d theta70 sd70", name) of theta_m
-    at 70 kHz at other couplings, drawn with open diamonds."""
+    where missing; paper0/70: values paper 000 states in its text), named
+    label, its 70 kHz points at the coupling `coupling` (a text, e.g.
+    "kappa_scale 0.3"), blue at 0 kHz and orange at 70 kHz as in the
+    paper.  free: a second geometry (named free_label) in the same format,
+    drawn with open squares; couplings: (rows "H/d theta70 sd70", name) of
+    theta_m at 70 kHz at other couplings, drawn with open diamonds.  Paper
+    000's values at 6, 8.7 and 11.4 d are not stated in its text: the
+    dashed lines are a straight line through its 20 deg (3 d) and 17 deg
+    (14.4 d), and the same 2 deg lower, labelled as interpolated."""
     t = np.atleast_2d(np.asarray(table, float))
-    fig, ax = plt.subplots(figsize=(7.0, 3.4))
-    sets = [(t, "o-", None, label)]
-    if free is not None:
-        sets.append((np.atleast_2d(np.asarray(free, float)), "s:", "none", free_label))
-    for rows, fmt, fill, name in sets:
-        for col, c, frequency in ((1, "tab:blue", "0 kHz"), (3, "tab:orange", "70 kHz")):
-            ok = np.isfinite(rows[:, col])
-            if ok.any():
-                ax.errorbar(rows[ok, col], rows[ok, 0], xerr=np.nan_to_num(rows[ok, col + 1]), fmt=fmt, color=c,
-                            capsize=3,
-                            label=f"{frequency}, {name} (mean ± s.d.)", **({"mfc": fill} if fill else {}))
-    for k, (rows, name) in enumerate(couplings):
-        c = np.atleast_2d(np.asarray(rows, float))
-        ax.errorbar(c[:, 1], c[:, 0], xerr=np.nan_to_num(c[:, 2]), fmt="D", mfc="none", color=f"C{k + 2}",
-                    capsize=3, label=f"70 kHz, {name} (mean ± s.d.)")
-    h = np.linspace(3, 14.4, 2)
-    ax.plot(20 - 0.26 * (h - 3), h, "--", color="tab:blue", lw=0.8, label="paper 000 trend, 0 kHz")
-    ax.plot(18 - 0.26 * (h - 3), h, "--", color="tab:orange", lw=0.8, label="paper 000: 2° lower, 70 kHz")
-    if t.shape[1] >= 7:
-        for col, c in ((5, "tab:blue"), (6, "tab:orange")):
-            ok = np.isfinite(t[:, col])
-            ax.plot(t[ok, col], t[ok, 0], "s", mfc="none", color=c, ms=8,
-                    label=f"paper 000 text, {'0' if col == 5 else '70'} kHz")
-    ax.set_xlabel(r"avalanche angle $\theta_m$ (°)")
-    ax.set_ylabel("H/d")
-    ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0))   # beside the axes: no point hidden
-    fig.tight_layout()
-    return _save(fig, path, dpi)
+    at = f", {coupling}" if coupling else ""
+    with plt.rc_context(READABLE):
+        fig, ax = plt.subplots(figsize=(13.0, 9.0))
+        sets = [(t, "o-", None, label)]
+        if free is not None:
+            sets.append((np.atleast_2d(np.asarray(free, float)), "s:", "none", free_label))
+        for rows, fmt, fill, name in sets:
+            for col, c, frequency in ((1, COLOUR[0], "0 kHz (no ultrasound)"), (3, COLOUR[70], f"70 kHz{at}")):
+                ok = np.isfinite(rows[:, col])
+                if ok.any():
+                    ax.errorbar(rows[ok, col], rows[ok, 0], xerr=np.nan_to_num(rows[ok, col + 1]), fmt=fmt, color=c,
+                                capsize=4, ms=8, lw=2,
+                                label=f"{frequency}, {name} (mean ± s.d.)", **({"mfc": fill} if fill else {}))
+        for k, (rows, name) in enumerate(couplings):
+            c = np.atleast_2d(np.asarray(rows, float))
+            ax.errorbar(c[:, 1], c[:, 0], xerr=np.nan_to_num(c[:, 2]), fmt="D", mfc="none", mew=2, ms=10,
+                        color=("tab:red", "tab:green", "tab:purple")[k % 3], capsize=4,
+                        label=f"70 kHz, {name} (mean ± s.d.)")
+        h = np.linspace(3, 14.4, 2)
+        line = 20 + (17 - 20) * (h - 3) / (14.4 - 3)
+        ax.plot(line, h, "--", color=COLOUR[0], lw=1.2,
+                label="paper 000, 0 kHz: interpolated, a straight line through its 20° (3 d) and 17° (14.4 d)")
+        ax.plot(line - 2, h, "--", color=COLOUR[70], lw=1.2,
+                label="paper 000, 70 kHz: the same line 2° lower (its text: \"about 2° lower\"), interpolated")
+        if t.shape[1] >= 7:
+            for col, frequency in ((5, 0), (6, 70)):
+                ok = np.isfinite(t[:, col])
+                nominal = [min((3, 6, 8.7, 11.4, 14.4), key=lambda n: abs(n - h)) for h in t[ok, 0]]
+                values = ", ".join(f"{v:g}° at {h:g} d" for v, h in zip(t[ok, col], nominal))
+                ax.plot(t[ok, col], t[ok, 0], "s", mfc="none", mew=2, color=COLOUR[frequency], ms=12,
+                        label=f"paper 000, {frequency} kHz, stated in its text ({values})")
+        ax.set_xlabel(r"avalanche angle $\theta_m$ (°)")
+        ax.set_ylabel("layer thickness H/d (measured)")
+        ax.set_title("Fig. 7: avalanche angle against layer thickness, without and with 70 kHz ultrasound")
+        ax.grid(alpha=0.3)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=1, frameon=False)   # below: no point hidden
+        fig.tight_layout()
+        return _save(fig, path, dpi)
 
 
 def fig_kappa(path, rows, dpi=110):
@@ -188,26 +210,63 @@ def fig_kappa(path, rows, dpi=110):
     return _save(fig, path, dpi)
 
 
-def fig_tcon(path, rows, dpi=110):
-    """Fig. 8 from rows (label, theta, t_con) (one per run; several packings
-    may give several points per label and angle); labels starting with
-    "paper" are reference values, drawn as stars."""
-    fig, ax = plt.subplots(figsize=(4.5, 3.4))
-    for k, label in enumerate(dict.fromkeys(r[0] for r in rows)):
-        pts = np.array([[r[1], r[2]] for r in rows if r[0] == label], float)
-        if label.startswith("paper"):           # reference values: stars, no line
-            ax.plot(pts[:, 0], pts[:, 1], "*", ms=12, color="k" if "70" not in label else "tab:red", label=label)
-            continue
-        pts = pts[np.argsort(pts[:, 0])]
-        marker = "o" if "70" not in label else "^"
-        ax.plot(pts[:, 0], pts[:, 1], marker, color=f"C{k}", label=label, alpha=0.8)
-        angles = np.unique(pts[:, 0])
-        ax.plot(angles, [pts[pts[:, 0] == th, 1].mean() for th in angles], "-", color=f"C{k}", lw=0.8)
-    ax.set_xlabel(r"$\theta$ (°)")
-    ax.set_ylabel(r"$t_{con}$ (s)")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    return _save(fig, path, dpi)
+def _tcon_label(label):
+    """(H/d, kHz) of a Fig. 8 row label "H<H>_<f>kHz..." or "paper000_H<H>_<f>kHz"."""
+    import re
+    m = re.search(r"H([0-9.]+)_([0-9.]+)kHz", label)
+    if m is None:
+        raise ValueError(f"fig_tcon: a label must hold H<H/d>_<f>kHz, got {label}")
+    return float(m.group(1)), float(m.group(2))
+
+
+def fig_tcon(path, rows, dpi=110, coupling=None):
+    """Fig. 8 from rows (label, theta, t_con[, kind]), one per run, label
+    "H<H/d>_<f>kHz[...]" (several packings give several points per label
+    and angle): one panel per H/d, blue at 0 kHz and orange at 70 kHz as in
+    paper 000, with its symbols: stars at theta_m (kind "thetam": the
+    ramp's own flow), filled squares at the angles above it (kind "run",
+    the default), the mean over packings at each angle as a line.  Labels
+    starting with "paper" are values paper 000 states in its text, drawn
+    as large open circles; coupling: the text of the 70 kHz runs'
+    coupling (e.g. "kappa_scale 0.3"), said in the legend."""
+    rows = [tuple(r) + (("run",) if len(r) == 3 else ()) for r in rows]
+    heights = sorted({_tcon_label(r[0])[0] for r in rows})
+    at = f", {coupling}" if coupling else ""
+    with plt.rc_context(READABLE):
+        fig, axes = plt.subplots(1, len(heights), figsize=(5.2 * len(heights), 8.0), sharey=True, squeeze=False)
+        for ax, H in zip(axes[0], heights):
+            for frequency in (0.0, 70.0):
+                c = COLOUR[int(frequency)]
+                mine = [r for r in rows if _tcon_label(r[0]) == (H, frequency) and not r[0].startswith("paper")]
+                words = "0 kHz" if frequency == 0 else f"70 kHz{at}"
+                for kind, marker, size, name in (("thetam", "*", 16, "at θ_m (stars)"),
+                                                 ("run", "s", 8, "above θ_m (filled squares)")):
+                    pts = np.array([[r[1], r[2]] for r in mine if r[3] == kind], float).reshape(-1, 2)
+                    if len(pts):
+                        ax.plot(pts[:, 0], pts[:, 1], marker, color=c, ms=size, alpha=0.85, mec="k", mew=0.5,
+                                label=f"{words}, {name}")
+                pts = np.array([[r[1], r[2]] for r in mine], float).reshape(-1, 2)
+                if len(pts):
+                    angles = np.unique(pts[:, 0])
+                    ax.plot(angles, [pts[pts[:, 0] == th, 1].mean() for th in angles], "-", color=c, lw=1.5,
+                            label=f"{'0 kHz' if frequency == 0 else '70 kHz'}, mean over packings")
+                for r in rows:
+                    if r[0].startswith("paper") and _tcon_label(r[0]) == (H, frequency):
+                        ax.plot(r[1], r[2], "o", mfc="none", mec=c, mew=3, ms=18,
+                                label=f"paper 000, {frequency:g} kHz: {r[2]:g} s at {r[1]:g}° (stated in its text)")
+            ax.set_title(f"H = {H:g} d")
+            ax.set_xlabel(r"slope angle $\theta$ (°)")
+            ax.grid(alpha=0.3)
+        axes[0][0].set_ylabel(r"time to a uniform flow $t_{con}$ (s)")
+        legend = {}
+        for ax in axes[0]:                    # one legend for the panels, below them: no point hidden
+            for handle, text in zip(*ax.get_legend_handles_labels()):
+                legend.setdefault(text, handle)
+        fig.suptitle("Fig. 8: time from the tilt to a uniform flow, without (blue) and with (orange) 70 kHz")
+        fig.tight_layout(rect=(0, 0.2, 1, 1))
+        fig.legend(legend.values(), legend.keys(), loc="lower center", ncol=2, frameon=False,
+                   bbox_to_anchor=(0.5, 0.0))
+        return _save(fig, path, dpi)
 
 
 def fig_chains(path, atoms, c, dpi=110):
@@ -303,8 +362,10 @@ def main(argv=None):
     t.add_argument("--free-label", default="free ends")
     t.add_argument("--coupling", nargs=2, action="append", metavar=("TABLE", "LABEL"),
                    help="theta_m at 70 kHz at another coupling (lines H/d theta70 sd70), open diamonds")
+    t.add_argument("--coupling-of-70", help="the coupling of the table's 70 kHz points, said in the legend")
     c = sub.add_parser("tcon")
     c.add_argument("table")
+    c.add_argument("--coupling", help="the coupling of the 70 kHz runs, said in the legend")
     kap = sub.add_parser("kappa")
     kap.add_argument("table")
     ch = sub.add_parser("chains")
@@ -332,10 +393,10 @@ def main(argv=None):
             sys.exit(str(e))
     elif a.cmd == "thetam":
         fig_thetam(a.output, np.loadtxt(a.table), a.label, np.loadtxt(a.free) if a.free else None, a.free_label,
-                   [(np.loadtxt(table), name) for table, name in a.coupling or []], a.dpi)
+                   [(np.loadtxt(table), name) for table, name in a.coupling or []], a.dpi, a.coupling_of_70)
     elif a.cmd == "tcon":
         rows = [line.split() for line in open(a.table) if line.strip() and not line.startswith("#")]
-        fig_tcon(a.output, [(r[0], float(r[1]), float(r[2])) for r in rows], a.dpi)
+        fig_tcon(a.output, [(r[0], float(r[1]), float(r[2])) + tuple(r[3:4]) for r in rows], a.dpi, a.coupling)
     elif a.cmd == "kappa":
         rows = [line.split() for line in open(a.table) if line.strip() and not line.startswith("#")]
         fig_kappa(a.output, [tuple(float(r[k]) for k in (0, 1, 3, 4, 5)) + (r[6],) for r in rows], a.dpi)

@@ -407,7 +407,7 @@ def test_figures_from_synthetic_runs(tmp_path):
                       "0.1 8.7 1 1.5 0.8 2 free_ends\n0.3 8.7 1 3 0.6 nan free_ends\n")
     (tmp_path / "coupling.txt").write_text("6 16.5 0.4\n14.4 15 nan\n")
     table8 = tmp_path / "tcon.txt"
-    table8.write_text("0kHz 19.5 0.2\n0kHz 20.5 0.1\n70kHz 15 0.09\npaper_0kHz 19 1.15\n")
+    table8.write_text("H6_0kHz 19.5 0.2 thetam\nH6_0kHz 20.5 0.1\nH6_70kHz 15 0.09 thetam\npaper000_H6_0kHz 19 1.15\n")
     hist = tmp_path / "modes.hist"
     hist.write_text("# Time-averaged data for fix hist\n# TimeStep Number-of-rows\n"
                     "100 3\n1 500 0.0004\n2 1500 0.0004\n3 2500 0.0002\n")
@@ -438,3 +438,47 @@ def test_fig7_draws_the_points_of_another_coupling(tmp_path):
     # each error bar spans mean - s.d. to mean + s.d. at its H/d
     spans = [sorted(x for x, _ in seg) for seg in bars.get_segments()]
     assert spans == [pytest.approx([16.09, 16.91]), pytest.approx([14.25, 15.25])]
+
+
+def test_fig7_says_which_paper_values_are_interpolated(tmp_path):
+    """Fig. 7's paper lines are a straight line through 20 deg (3 d) and
+    17 deg (14.4 d) and the same 2 deg lower, labelled as interpolated; the
+    values of the paper's text are drawn at their own H/d; the 70 kHz
+    ensemble says its coupling; paper 000's colours."""
+    from acoustic_tools import avalanche_figures as figs
+    table7 = [(3.1, 20.6, 0.8, 20.4, 0.5, 20, 14.5), (13.9, 16.2, 1.3, 11.0, 0.4, 17, np.nan)]
+    fig = figs.fig_thetam(tmp_path / "fig7.png", table7, "free ends, 400 d", coupling="kappa_scale 0.3", dpi=40)
+    ax = fig.axes[0]
+    lines = {line.get_label(): line for line in ax.get_lines()}
+    interpolated = [name for name in lines if name.startswith("paper 000") and "interpolated" in name]
+    assert len(interpolated) == 2
+    zero = lines[interpolated[0]]
+    assert zero.get_xdata().tolist() == pytest.approx([20, 17]) and zero.get_ydata().tolist() == [3, 14.4]
+    assert lines[interpolated[1]].get_xdata().tolist() == pytest.approx([18, 15])
+    stated = lines["paper 000, 0 kHz, stated in its text (20° at 3 d, 17° at 14.4 d)"]
+    assert stated.get_xdata().tolist() == [20, 17]
+    labels = [c.get_label() for c in ax.containers]
+    assert "70 kHz, kappa_scale 0.3, free ends, 400 d (mean ± s.d.)" in labels
+    assert [c.lines[0].get_color() for c in ax.containers] == [figs.COLOUR[0], figs.COLOUR[70]]
+
+
+def test_fig8_stars_at_theta_m_squares_above(tmp_path):
+    """Fig. 8: one panel per H/d; the ramps' flows at theta_m are stars, the
+    runs above theta_m filled squares, blue at 0 and orange at 70 kHz; the
+    paper's stated values sit on their own panel."""
+    from acoustic_tools import avalanche_figures as figs
+    rows = [("H6_0kHz_free_ends", 18.0, 0.5, "thetam"), ("H6_0kHz_free_ends", 19.0, 0.4, "run"),
+            ("H6_70kHz_free_ends", 16.0, 0.3, "thetam"), ("H14.4_0kHz_free_ends", 16.5, 1.0, "thetam"),
+            ("paper000_H6_0kHz", 19.0, 1.15)]
+    fig = figs.fig_tcon(tmp_path / "fig8.png", rows, dpi=40, coupling="kappa_scale 0.3")
+    assert [ax.get_title() for ax in fig.axes] == ["H = 6 d", "H = 14.4 d"]
+    six = {line.get_label(): line for line in fig.axes[0].get_lines()}
+    star = six["0 kHz, at θ_m (stars)"]
+    assert star.get_marker() == "*" and star.get_color() == figs.COLOUR[0]
+    assert star.get_xdata().tolist() == [18.0]
+    square = six["0 kHz, above θ_m (filled squares)"]
+    assert square.get_marker() == "s" and square.get_xdata().tolist() == [19.0]
+    orange = six["70 kHz, kappa_scale 0.3, at θ_m (stars)"]
+    assert orange.get_color() == figs.COLOUR[70]
+    assert six["paper 000, 0 kHz: 1.15 s at 19° (stated in its text)"].get_ydata().tolist() == [1.15]
+    assert not any(name.startswith("paper") for name in (line.get_label() for line in fig.axes[1].get_lines()))

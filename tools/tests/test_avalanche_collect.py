@@ -283,7 +283,7 @@ def test_tcon_points_of_a_free_ends_record_drawn_once(collect, tmp_path):
     (label,) = all_ens
     assert label.startswith("free")
     assert collect.tcon_table_lines(all_ens, label, label) == [
-        "H6_0kHz_free_ends 18 0.5\n", "H6_0kHz_free_ends 19 0.4\n", "H6_70kHz_free_ends 15 0.2\n"]
+        "H6_0kHz_free_ends 18 0.5 thetam\n", "H6_0kHz_free_ends 19 0.4 run\n", "H6_70kHz_free_ends 15 0.2 thetam\n"]
 
 
 def test_ramps_at_other_frequencies_beside_the_packing(collect, out, capsys):
