@@ -118,3 +118,22 @@ def test_kpm_band_against_the_dense_modes(layer):
     assert abs(top_dense - highest) <= 1e3
     assert share_kpm == pytest.approx(0.5, abs=0.05)
     assert top_kpm == pytest.approx(highest, rel=0.03), "measured: 1 % (60.9 against 60.3 kHz)"
+
+
+def test_band_calibration_puts_the_band_top_at_the_target(layer):
+    """study.py calibrate --band: the kappa_scale at which 99.9 % of the modes
+    lie below the target, found from one density of states by the
+    kappa^(1/3) scaling; computed again there, the band top is the target,
+    and at the study's coupling it is the target times (0.17 / kappa)^(1/3)."""
+    from acoustic_tools.avalanche_study import KAPPA
+    done = subprocess.run([sys.executable, os.path.join(HERE, "study.py"), "calibrate", "deposit.restart", "band.json",
+                           "--band", "60e3"], cwd=layer, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    result = json.load(open(layer / "band.json"))
+    kappa = result["kappa"]
+    assert kappa == pytest.approx(0.3 * (60e3 / result["reference"]["top"]) ** 3)
+    # the band's histogram has bins of 1 kHz: the top is found again within one
+    assert result["at_kappa"]["top"] == pytest.approx(60e3, abs=1e3)
+    assert result["at_check"]["kappa"] == KAPPA
+    assert result["at_check"]["top"] == pytest.approx(60e3 * (KAPPA / kappa) ** (1 / 3), abs=1e3)
+    assert f"below 60 kHz at kappa_scale {kappa:.3f}" in done.stdout
