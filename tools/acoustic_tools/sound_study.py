@@ -401,8 +401,8 @@ def main(here, argv=None):
                                  "OUT/chain_poly<W> (Table III, Fig. 7), e.g. 0.05 0.1 0.2")
         parser.add_argument("--chain-poly-sizes", nargs="+", type=int, default=list(CHAIN_POLY_SIZES),
                             help="their N (8 16 ... 512)")
-        parser.add_argument("--chain-realizations", type=int, default=20,
-                            help="polydisperse chains of each N and W (20)")
+        parser.add_argument("--chain-realizations", type=int, default=100,
+                            help="polydisperse chains of each N and W (100)")
         parser.add_argument("--lattice", nargs="+", metavar="P",
                             help="perfect triangular lattices at these pressures, 9 and 29 rows of --width balls, "
                                  "into OUT/lattice_p<P>_M<W> (Figs. 8, 12; c_tof beside Eqs. 18-19)")
