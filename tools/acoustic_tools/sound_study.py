@@ -22,7 +22,7 @@
 
 The directory's name is only a name: collect reads the settings from
 job.json.  Directory names keep the texts of the pressure and the piston
-given on the command line (p1e-4, _m0.1, _v0), as run_production.sh named
+given on the command line (p1e-4, _m0.1, _v0), as the former run_production.sh named
 them.
 """
 import concurrent.futures
@@ -84,7 +84,7 @@ def sample_settings(p, H, seed, width=24, depth=0, piston_mass=DEFAULT_MASS, pis
 
 
 def write_sample_job(directory, p, H, seed, width, depth, piston_mass, piston_speed):
-    """job.json of a sample run by examples/sound/run_production.sh (texts of
+    """job.json of a sample run by the former examples/sound/run_production.sh (texts of
     its command line)"""
     study.write_job(directory, sample_settings(p, H, seed, width, depth, piston_mass, piston_speed))
 
@@ -96,7 +96,7 @@ def add_wall_seconds(directory, seconds):
 
 def _deck_text(settings, name, texts):
     """the -var text of one of a sample's settings: the command line's text
-    when there is one (the log then reads as run_production.sh's), else
+    when there is one (the log then reads as the former run_production.sh's), else
     the number"""
     return texts.get(name, f"{settings[name]:g}" if isinstance(settings[name], float) else str(settings[name]))
 
@@ -329,7 +329,7 @@ def legacy_result(directory):
 def migrate_directory(directory, remove_old=False):
     """job.json (settings from the directory's name and summary.txt) and
     result.json (legacy_result) of one old sample directory; a directory of
-    the new decks run by the old run_production.sh (result.json, no
+    the new decks run by the former run_production.sh (result.json, no
     job.json, wall_seconds alone in summary.txt) gets its job.json and its
     wall_seconds.  remove_old: delete the old files afterwards (record/).
     What was done, or None when nothing was to do."""
