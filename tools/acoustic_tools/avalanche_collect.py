@@ -29,6 +29,12 @@ Reading:
                         ensemble statistics
   print_tables, print_kappa, print_switch_on, print_couplings, ...
                         the markdown tables
+  calibrated_study, sensitivity_study, table1_study, tcon_above, paper_thetam,
+  print_calibrated, write_calibrated_tables
+                        the study at the calibrated coupling KAPPA (issue 42's
+                        sets: thickness, tcon_cal, sensitivity, paper_length,
+                        table1), apart from the sets run before the
+                        calibration at SET_KAPPA (a sensitivity study now)
   study_data, write_tables, draw_figures, collect, figures
                         all of it: tables and summary.json, and the figures
 """
@@ -43,7 +49,7 @@ import numpy as np
 from . import avalanche as av
 from . import avalanche_figures as figs
 from . import study
-from .avalanche_study import KAPPA, KAPPA_BEFORE
+from .avalanche_study import KAPPA, KAPPA_BEFORE, SENSITIVITY, SENSITIVITY_H
 from .lammps_output import read_dump
 from .stats import mean_sd
 
@@ -110,20 +116,31 @@ def _geometry_order(key):
     return (first, free, layer or 0, float(modulus or 0), float(restitution or 0))
 
 
-def geometries(top):
-    """(geometry, label) of the ensembles among the jobs: the periodic set,
-    the free-ends set (400 d), then the others (another length, another
-    contact law) by length, modulus and restitution."""
-    keys = {geometry(j["settings"]) for j in _jobs(top).values() if _in_ensemble(j)}
+def geometries(top, kappa=SET_KAPPA):
+    """(geometry, label) of the ensembles among the jobs at kappa_scale
+    kappa: the periodic set, the free-ends set (400 d), then the others
+    (another length, another contact law) by length, modulus and
+    restitution."""
+    keys = {geometry(j["settings"]) for j in _jobs(top).values() if _in_ensemble(j, kappa)}
     return [(key, geometry_label(key)) for key in sorted(keys, key=_geometry_order)]
 
 
-def _in_ensemble(job):
-    """A ramp or t_con run of the ensembles: the set's kappa_scale, ultrasound
-    on from the start (no switch-on)."""
+def _in_ensemble(job, kappa=SET_KAPPA):
+    """A ramp or t_con run of the ensembles at kappa_scale kappa (by default
+    the set's), ultrasound on from the start (no switch-on), not a run of
+    one angle (Table 1's, one_angle)."""
     s = job["settings"]
-    return (s.get("kind") in ("ramp", "tcon") and float(s.get("kappa", SET_KAPPA)) == SET_KAPPA
-            and s.get("switch_on") is None)
+    return (s.get("kind") in ("ramp", "tcon") and float(s.get("kappa", SET_KAPPA)) == kappa
+            and s.get("switch_on") is None and not one_angle(s))
+
+
+def one_angle(settings):
+    """A ramp that holds one angle and follows nothing after the window
+    (theta0 = thetamax, tfollow 0: avalanche_study.table1_settings), a
+    measurement of the cost, not of theta_m."""
+    s = settings
+    return (s.get("kind") == "ramp" and s.get("thetamax") is not None and s.get("theta0") is not None
+            and float(s["theta0"]) == float(s["thetamax"]) and float(s.get("tfollow", 1.2)) == 0)
 
 
 def result(job):
@@ -159,7 +176,7 @@ def packing(jobs, ramps, tcons):
     s = any_job["settings"]
     n, nb, hm, length = deposit(jobs, any_job)
     p = {"dirs": {tag: j["dir"] for tag, j in ramps.items()}, "seed": str(s["seed"]), "grains": n, "base": nb,
-         "H_measured": hm, "length": length, "deposit": s.get("deposit")}
+         "H_measured": hm, "length": length, "deposit": s.get("deposit"), "window": s.get("window")}
     for tag in ("f0", "f70"):
         job = ramps.get(tag)
         p[tag] = result(job)
@@ -176,14 +193,15 @@ def packing(jobs, ramps, tcons):
     return p
 
 
-def ensembles(top):
+def ensembles(top, kappa=SET_KAPPA):
     """{geometry label: {H: [packings]}} for the geometries present: the
-    ramps at the set's kappa_scale without switch-on, grouped by packing;
-    a packing needs its deposit and theta_m at 0 or 70 kHz."""
+    ramps at kappa_scale kappa (by default the set's) without switch-on,
+    grouped by packing; a packing needs its deposit and theta_m at 0 or 70
+    kHz."""
     jobs = _jobs(top)
     by_packing = {}
     for job in jobs.values():
-        if not _in_ensemble(job):
+        if not _in_ensemble(job, kappa):
             continue
         s = job["settings"]
         ramps, tcons = by_packing.setdefault(packing_key(s), ({}, []))
@@ -192,7 +210,7 @@ def ensembles(top):
         else:
             tcons.append(job)
     out = {}
-    for key, label in geometries(jobs):
+    for key, label in geometries(jobs, kappa):
         by_h = {}
         for pkey in sorted((k for k in by_packing if k[:4] == key), key=lambda k: (k[4], k[5])):
             ramps, tcons = by_packing[pkey]
@@ -243,21 +261,21 @@ def time_before_onset(job):
     return sum(t for _, _, t, _ in lines[:spreading[0]]) if spreading else np.nan
 
 
-def _ramps_by_packing(jobs):
-    """{packing key: {tag: ramp job}} of the ensembles' ramps."""
+def _ramps_by_packing(jobs, kappa=SET_KAPPA):
+    """{packing key: {tag: ramp job}} of the ensembles' ramps at kappa_scale kappa."""
     found = {}
     for job in jobs.values():
-        if _in_ensemble(job) and job["settings"]["kind"] == "ramp":
+        if _in_ensemble(job, kappa) and job["settings"]["kind"] == "ramp":
             found.setdefault(packing_key(job["settings"]), {})[job["settings"]["tag"]] = job
     return found
 
 
-def paired_ramps(jobs, ramps):
-    """(ramp, the same packing's ramps {tag: job} in its ensemble) for every
-    ramp of a study.  A packing whose deposit differs from the ensemble's
-    (grains, base, H, length) is not the same packing: it is left out, with
-    a note on stderr."""
-    reference = _ramps_by_packing(jobs)
+def paired_ramps(jobs, ramps, kappa=SET_KAPPA):
+    """(ramp, the same packing's ramps {tag: job} in its ensemble at
+    kappa_scale kappa) for every ramp of a study.  A packing whose deposit
+    differs from the ensemble's (grains, base, H, length) is not the same
+    packing: it is left out, with a note on stderr."""
+    reference = _ramps_by_packing(jobs, kappa)
     pairs = []
     for job in sorted(ramps, key=lambda j: j["name"]):
         ref = reference.get(packing_key(job["settings"]))
@@ -281,11 +299,13 @@ def kappa_study(top, free=0):
     below theta_m, shift of the first spreading flow) of the 70 kHz ramps at
     a kappa_scale other than the set's (no switch-on) with free ends (free
     1) or periodic (free 0), each beside the same packing's ramps at the
-    set's kappa_scale (paired_ramps)."""
+    set's kappa_scale (paired_ramps).  The ramps of the calibrated study
+    (kappa_scale KAPPA and the sensitivity set's, calibrated_study) are
+    not part of it."""
     jobs = _jobs(top)
     study_ramps = [j for j in jobs.values() if j["settings"].get("kind") == "ramp"
                    and j["settings"].get("tag") == "f70" and j["settings"].get("switch_on") is None
-                   and float(j["settings"].get("kappa", SET_KAPPA)) != SET_KAPPA
+                   and float(j["settings"].get("kappa", SET_KAPPA)) not in (SET_KAPPA, KAPPA) + tuple(SENSITIVITY)
                    and int(j["settings"].get("free", 1)) == free]
     rows = {}                 # (kappa, H, seed) -> row: the reference ramps appear once
     for job, ref in paired_ramps(jobs, study_ramps):
@@ -559,6 +579,270 @@ def _table_text(rows):
     return "".join(" ".join(f"{v:g}" for v in row) + "\n" for row in rows)
 
 
+# ------------------------------------------------ the study at the calibrated coupling
+# issue 42's production sets at kappa_scale KAPPA (avalanche_study.production:
+# thickness, tcon_cal, sensitivity, paper_length, table1), read like the
+# others from job.json and result.json: the ensembles at KAPPA (ensembles(top,
+# KAPPA)), the sensitivity set's 70 kHz ramps at the other readings of the
+# band top, and the one-angle runs of Table 1.
+
+# paper 000 Table 1: (t70 - t0)/t70 for N grains (its +49 % and +26 %)
+PAPER_TABLE1 = {8000: 0.49, 32000: 0.26}
+TCON_STEPS = (1.0, 2.0, 3.0)   # deg above each packing's theta_m (the tcon_cal set)
+CALIBRATED_LABEL = f"kappa_scale {KAPPA:g} (the calibrated coupling)"
+BEFORE_LABEL = f"kappa_scale {SET_KAPPA:g} (run before the calibration: sensitivity study)"
+
+
+def paper_thetam(H):
+    """paper 000's theta_m at 0 and 70 kHz and its shift at the target H/d,
+    as texts that say where each comes from: stated in its text (3 d: 20
+    and 14.5 deg; 14.4 d: 17 deg) or interpolated as Fig. 7 draws them (0
+    kHz on the straight line through 20 deg at 3 d and 17 deg at 14.4 d,
+    70 kHz 2 deg below the 0 kHz value, its "about 2 deg lower")."""
+    t0, t70 = PAPER.get(float(H), (np.nan, np.nan))
+    line = 20.0 + (17.0 - 20.0) * (float(H) - 3.0) / (14.4 - 3.0)
+    zero = f"{t0:g} (stated)" if np.isfinite(t0) else f"≈ {line:.1f} (interpolated)"
+    base = t0 if np.isfinite(t0) else line
+    seventy = f"{t70:g} (stated)" if np.isfinite(t70) else f"≈ {base - 2:.1f} (interpolated)"
+    shift = f"{t0 - t70:g} (stated)" if np.isfinite(t0) and np.isfinite(t70) else "≈ 2 (its text)"
+    return zero, seventy, shift
+
+
+def with_error(ms, digits=2):
+    """"mean ± s.d. (s.e.)" of a (mean, s.d., count); the mean alone, or a dash."""
+    se = standard_error(ms)
+    return fmt(ms, digits) + (f" ({fmt(se, digits)})" if np.isfinite(se[0]) else "")
+
+
+def tcon_above(packs, tag, step):
+    """t_con of each packing's t_con run `step` deg above its own theta_m at
+    the ramp tag (nan: not uniform within 0.1 + tfollow s); packings
+    without such a run are not listed."""
+    return [t for p in packs if np.isfinite(p[tag][0])
+            for th, t in p[f"tcon_{tag}"] if abs(th - p[tag][0] - step) < 1e-6]
+
+
+def times_text(times):
+    """mean ± s.d. of t_con runs with their count, and how many were not
+    uniform (nan) within the time followed; a dash without runs."""
+    ms = mean_sd(times)
+    if not times:
+        return "—"
+    missing = len(times) - ms[2]
+    return f"{fmt(ms)} s ({ms[2]}" + (f"; {missing} not uniform within {FOLLOW:g} s" if missing else "") + ")"
+
+
+def sensitivity_study(top):
+    """Rows (kappa, H, seed, theta_m 0 Hz, theta_m 70 kHz, shift, mean
+    mu*/mu before theta_m, shift of the first spreading flow) of the 70 kHz
+    ramps of the SENSITIVITY_H d free-ends packings (400 d, in.material's
+    contact law) at KAPPA and at the sensitivity set's couplings
+    (SENSITIVITY), each beside the same packing's 0 Hz ramp at KAPPA
+    (paired_ramps); none without a ramp at one of SENSITIVITY."""
+    jobs = _jobs(top)
+    kappas = set(SENSITIVITY) | {KAPPA}
+    ramps = [j for j in jobs.values() if j["settings"].get("kind") == "ramp" and j["settings"].get("tag") == "f70"
+             and j["settings"].get("switch_on") is None and not one_angle(j["settings"])
+             and j["settings"].get("window") is None
+             and float(j["settings"].get("kappa", SET_KAPPA)) in kappas
+             and float(j["settings"]["H"]) == SENSITIVITY_H
+             and geometry(j["settings"]) == (1, float(DEFAULT_LAYER), None, None)]
+    if not any(float(j["settings"]["kappa"]) != KAPPA for j in ramps):
+        return []
+    rows = []
+    for job, ref in paired_ramps(jobs, ramps, KAPPA):
+        H, seed = _study_key(job)
+        t0, t70 = result(ref.get("f0"))[0], result(job)[0]
+        if not np.isfinite(t70):
+            continue
+        onset0 = flow_onset(ref["f0"]) if "f0" in ref else np.nan
+        rows.append((float(job["settings"]["kappa"]), H, seed, t0, t70, t0 - t70, last_mu_factor(job),
+                     onset0 - flow_onset(job)))
+    return sorted(rows, key=lambda r: (r[0], r[1], int(r[2]) if r[2].isdigit() else 0, r[2]))
+
+
+def sensitivity_summary(rows):
+    """{kappa: ((mean, s.d., count) of theta_m at 70 kHz, of the shift)} of
+    sensitivity_study's rows."""
+    return {k: (mean_sd([r[4] for r in rows if r[0] == k]), mean_sd([r[5] for r in rows if r[0] == k]))
+            for k in sorted({r[0] for r in rows})}
+
+
+def _paper_grains(grains):
+    """The N of paper 000's Table 1 within 10 % of grains, or None."""
+    near = [n for n in PAPER_TABLE1 if abs(grains - n) <= 0.1 * n]
+    return near[0] if near else None
+
+
+def table1_study(top):
+    """Rows (H, grains, base grains, length, time at the angle 0 / 70 kHz,
+    wall time 0 / 70 kHz, (t70 - t0)/t70, paper 000's N or None, its value
+    or nan) of the one-angle runs at KAPPA (one_angle: Table 1's, the same
+    simulated time at 0 and 70 kHz), a row per packing with both
+    frequencies finished and their deposit, by grains."""
+    jobs = _jobs(top)
+    runs = {}
+    for job in jobs.values():
+        s = job["settings"]
+        if one_angle(s) and float(s.get("kappa", SET_KAPPA)) == KAPPA and s.get("switch_on") is None:
+            runs.setdefault(packing_key(s), {})[s.get("tag")] = job
+    rows = []
+    for key, ramps in runs.items():
+        if "f0" not in ramps or "f70" not in ramps or jobs.get(ramps["f0"]["settings"].get("deposit", "")) is None:
+            continue
+        grains, base, _, length = deposit(jobs, ramps["f0"])
+        held = [sum(t for _, _, t, _ in angles(ramps[tag])) for tag in ("f0", "f70")]
+        w0, w70 = _wall(ramps["f0"]), _wall(ramps["f70"])
+        n = _paper_grains(grains)
+        rows.append((key[4], grains, base, length, held[0], held[1], w0, w70, (w70 - w0) / w70, n,
+                     PAPER_TABLE1[n] if n else np.nan))
+    return sorted(rows, key=lambda r: (r[1], r[0]))
+
+
+def calibrated_study(top):
+    """The study at the calibrated coupling: a dict with its ensembles
+    ("ensembles": {label: {H: [packings]}}, ensembles(top, KAPPA)), their
+    summaries ("summary"), {label: geometry} ("geometries"), the label of the free-ends 400 d one ("label",
+    None without it), the sensitivity set ("sensitivity": rows of
+    sensitivity_study) and Table 1 ("table1": rows of table1_study); None
+    when none of these is there."""
+    jobs = _jobs(top)
+    ens = ensembles(jobs, KAPPA)
+    sens, t1 = sensitivity_study(jobs), table1_study(jobs)
+    if not ens and not sens and not t1:
+        return None
+    main = geometry_label((1, float(DEFAULT_LAYER), None, None))
+    return {"ensembles": ens, "summary": {label: summarise(by_h) for label, by_h in ens.items()},
+            "geometries": {label: key for key, label in geometries(jobs, KAPPA)},
+            "label": main if main in ens else None, "sensitivity": sens, "table1": t1}
+
+
+def print_calibrated_thetam(label, by_h, summary):
+    """theta_m at 0 and 70 kHz per H of one geometry at KAPPA (mean ± s.d.
+    and standard error over the packings), the shift paired by packing with
+    its standard error, beside paper 000's values (stated or interpolated),
+    then each packing, on stdout."""
+    rows, s0, s70 = summary
+    print(f"\n### θ_m at {CALIBRATED_LABEL}, {label}\n")
+    print("| H/d (measured) | packings | grains + base, length | θ_m 0 kHz, mean ± s.d. (s.e.) "
+          "| θ_m 70 kHz, mean ± s.d. (s.e.) | shift paired by packing, mean ± s.d. (s.e.) | pairs "
+          "| paper 000 θ_m 0 kHz | paper 000 θ_m 70 kHz | paper 000 shift |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        p0, p70, pshift = paper_thetam(r["H"])
+        print(f"| {r['H']:g} ({r['H_measured']:.2f}) | {r['n']} | {r['grains']} + {r['base']}, {r['length']:g} d "
+              f"| {with_error(r['theta0'])}° | {with_error(r['theta70'])}° | {with_error(r['shift'])}° "
+              f"| {r['shift'][2]} | {p0}° | {p70}° | {pshift}° |")
+    print("\n(s.e.: the standard error of the mean, s.d./√n; the shift is θ_m(0 kHz) − θ_m(70 kHz) of each "
+          "packing with both ramps; paper 000 states 20° / 14.5° at 3 d and 17° at 14.4 d, the other values "
+          "are interpolated as in Fig. 7)")
+    print(f"\nslope of θ_m(H/d), all packings: 0 kHz {slope_text(s0)}, 70 kHz {slope_text(s70)} "
+          f"(paper 000 ≈ {PAPER_SLOPE}°/d)")
+    print("\nper packing (seed: θ_m 0 / 70 kHz, shift, t_con at θ_m 0 / 70 kHz):")
+    for H, packs in sorted(by_h.items()):
+        print(f"- H = {H:g} d: " + "; ".join(
+            f"s{p['seed']}: {num(p['f0'][0])} / {num(p['f70'][0])}°, {num(p['f0'][0] - p['f70'][0])}°, "
+            f"{num(p['f0'][1], '.2f')} / {num(p['f70'][1], '.2f')} s" for p in packs))
+
+
+def print_calibrated_tcon(by_h):
+    """t_con at 0 and 70 kHz of one geometry at KAPPA: at theta_m (the
+    ramps), 1, 2 and 3 deg above each packing's theta_m (the tcon_cal set)
+    and at 19 deg at 6 d beside paper 000's 1.15 / 0.30 s; the thicknesses
+    with t_con runs only."""
+    heights = [H for H, packs in sorted(by_h.items()) if any(p["tcon_f0"] or p["tcon_f70"] for p in packs)]
+    if not heights:
+        return
+    print(f"\n### t_con at {CALIBRATED_LABEL} (mean ± s.d. (runs) over the packings)\n")
+    print("| H/d | frequency | at θ_m (the ramp) | " + " | ".join(f"θ_m + {s:g}°" for s in TCON_STEPS)
+          + f" | at {PAPER_TCON_ANGLE_H6:g}° | paper 000 |")
+    print("|---|---|---|" + "---|" * len(TCON_STEPS) + "---|---|")
+    for H in heights:
+        packs = by_h[H]
+        for k, tag in enumerate(("f0", "f70")):
+            at_m = [p[tag][1] for p in packs if np.isfinite(p[tag][0])]
+            steps = [times_text(tcon_above(packs, tag, s)) for s in TCON_STEPS]
+            at_angle = (times_text(tcon_runs_at_angle(packs, tag, PAPER_TCON_ANGLE_H6)) if H == 6.0 else "—")
+            paper = (f"{PAPER_TCON_H6_19DEG[k]:g} s at {PAPER_TCON_ANGLE_H6:g}° (stated)" if H == 6.0 else "—")
+            print(f"| {H:g} | {tag[1:]} kHz | {times_text(at_m)} | " + " | ".join(steps)
+                  + f" | {at_angle} | {paper} |")
+
+
+def print_sensitivity(rows):
+    """The sensitivity set's table (sensitivity_study's rows) and the shift
+    at each kappa_scale, on stdout; nothing without rows."""
+    if not rows:
+        return
+    print(f"\n### 70 kHz shift against kappa_scale at H = {SENSITIVITY_H:g} d (free ends, {DEFAULT_LAYER} d; "
+          f"the band top read 5 kHz lower or higher; θ_m at 0 kHz of the same packing at kappa_scale {KAPPA:g})\n")
+    print("| kappa_scale | packing | θ_m 0 kHz | θ_m 70 kHz | shift | mean μ*/μ before θ_m "
+          "| shift of the first spreading flow |")
+    print("|---|---|---|---|---|---|---|")
+    for k, H, seed, t0, t70, shift, mu, onset_shift in rows:
+        print(f"| {k:g} | {seed} | {num(t0)}° | {t70:g}° | {num(shift)}° | {num(mu, '.3f')} "
+              f"| {num(onset_shift)}° |")
+    print("\nmean ± s.d. (s.e.) over the packings:")
+    for k, (t70, shift) in sensitivity_summary(rows).items():
+        print(f"- kappa_scale {k:g}: θ_m 70 kHz {with_error(t70)}° (n = {t70[2]}), shift {with_error(shift)}° "
+              f"(pairs: {shift[2]})")
+
+
+def print_paper_length(ens, summary, keys):
+    """The free-ends layers of another length than DEFAULT_LAYER
+    (in.material's contact law; the paper_length set) beside the
+    DEFAULT_LAYER d ones at the same H (keys: {label: geometry} of the
+    ensembles ens), on stdout; nothing without them."""
+    main = geometry_label((1, float(DEFAULT_LAYER), None, None))
+    longer = [label for label in ens if keys[label][0] == 1 and keys[label][1] != DEFAULT_LAYER
+              and keys[label][2] is None and keys[label][3] is None]
+    if not longer:
+        return
+    print(f"\n### layers of paper 000's length beside the {DEFAULT_LAYER} d layers ({CALIBRATED_LABEL}; "
+          "mean ± s.d. over the packings)\n")
+    print("| H/d | layer, window | packings | grains + base | θ_m 0 kHz | θ_m 70 kHz | shift (s.e.) "
+          "| t_con at θ_m 0 / 70 kHz (s) | wall time per ramp 0 / 70 kHz (s) |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for label in longer:
+        for H in sorted(ens[label]):
+            for name in (label, main):
+                if name not in ens or H not in ens[name]:
+                    continue
+                layer = keys[name][1]
+                windows = sorted({p["window"] if p["window"] is not None else layer / 2 for p in ens[name][H]})
+                r = next(row for row in summary[name][0] if row["H"] == H)
+                print(f"| {H:g} | {layer:g} d, {', '.join(f'{w:g}' for w in windows)} d | {r['n']} "
+                      f"| {r['grains']} + {r['base']} | {fmt(r['theta0'])}° | {fmt(r['theta70'])}° "
+                      f"| {with_error(r['shift'])}° | {fmt(r['tcon0'])} / {fmt(r['tcon70'])} "
+                      f"| {num(r['wall0'], '.0f')} / {num(r['wall70'], '.0f')} |")
+
+
+def print_table1(rows):
+    """Table 1 as paper 000 measures it (table1_study's rows) on stdout;
+    nothing without rows."""
+    if not rows:
+        return
+    print(f"\n### Table 1: the cost of the ultrasound, (t70 − t0)/t70 ({CALIBRATED_LABEL}; one angle held, the same "
+          "simulated time at 0 and 70 kHz, LAMMPS's wall times as the jobs record them)\n")
+    print("| H/d | grains + base, length | time at the angle 0 / 70 kHz (s) | wall time 0 / 70 kHz (s) "
+          "| (t70 − t0)/t70 | paper 000 |")
+    print("|---|---|---|---|---|---|")
+    for H, grains, base, length, h0, h70, w0, w70, cost, n, paper in rows:
+        ptxt = f"{100 * paper:.0f} % (N = {n})" if n else "—"
+        print(f"| {H:g} | {grains} + {base}, {length:g} d | {h0:g} / {h70:g} | {w0:.0f} / {w70:.0f} "
+              f"| {100 * cost:.0f} % | {ptxt} |")
+
+
+def print_calibrated(cal):
+    """The markdown of the study at the calibrated coupling (calibrated_study) on stdout."""
+    print(f"\n## The study at {CALIBRATED_LABEL}")
+    for label, by_h in cal["ensembles"].items():
+        print_calibrated_thetam(label, by_h, cal["summary"][label])
+        print_calibrated_tcon(by_h)
+    print_sensitivity(cal["sensitivity"])
+    print_paper_length(cal["ensembles"], cal["summary"], cal["geometries"])
+    print_table1(cal["table1"])
+
+
 def study_data(top):
     """Everything the tables and figures are made of, read from the jobs in
     top: a dict with the ensembles ("ensembles": {label: {H: [packings]}}),
@@ -576,7 +860,9 @@ def study_data(top):
     couplings = coupling_summary(switch_on)
     data = {"ensembles": all_ens, "summary": summary, "kappa": kappa, "switch_on": switch_on,
             "couplings": couplings, "label": None, "free": None, "thetam": None, "thetam_free": None,
-            "couplings_tables": [], "tcon": [], "kappa_tables": {}}
+            "couplings_tables": [], "tcon": [], "kappa_tables": {}, "calibrated": calibrated_study(jobs),
+            "paper_tcon": [("paper000_H6_0kHz", PAPER_TCON_ANGLE_H6, PAPER_TCON_H6_19DEG[0]),
+                           ("paper000_H6_70kHz", PAPER_TCON_ANGLE_H6, PAPER_TCON_H6_19DEG[1])]}
     label = "periodic" if "periodic" in all_ens else next(iter(all_ens), None)
     if label is not None:
         free = next((g for g in summary if g.startswith("free")), None)
@@ -586,28 +872,41 @@ def study_data(top):
         measured = {r["H"]: r["H_measured"] for r in summary[free or label][0]}
         data["couplings_tables"] = [(kappa_scale, [(measured.get(H, H), t[0], t[1]) for H, t, _ in points])
                                     for kappa_scale, points in couplings.items()]
-        a = PAPER_TCON_ANGLE_H6
-        data["paper_tcon"] = [("paper000_H6_0kHz", a, PAPER_TCON_H6_19DEG[0]),
-                              ("paper000_H6_70kHz", a, PAPER_TCON_H6_19DEG[1])]
         data["tcon"] = tcon_rows(all_ens, label, free)
     for free, (name, geometry_name) in KAPPA_STUDIES.items():
         if kappa[name]:
             geometry_name = geometry_name.replace(" ", "_")
             data["kappa_tables"][name] = [(k, H, seed, shift, mu, onset_shift, geometry_name)
                                           for k, H, seed, t0, t70, shift, mu, onset_shift in kappa[name]]
+    cal = data["calibrated"]
+    if cal is not None:
+        main = cal["label"]
+        cal["thetam"] = thetam_table(cal["summary"][main][0]) if main else None
+        cal["tcon"] = tcon_rows(cal["ensembles"], main, None) if main else []
+        cal["kappa_table"] = [(k, H, seed, shift, mu, onset_shift, "free_ends")
+                              for k, H, seed, t0, t70, shift, mu, onset_shift in cal["sensitivity"]
+                              if np.isfinite(shift)]
     return data
 
 
 def tables_markdown(data):
-    """The markdown tables of every geometry and study (what collect prints)."""
-    text = io.StringIO()
+    """The markdown tables of every geometry and study (what collect prints):
+    the study at the calibrated coupling first where it is there
+    (print_calibrated), then the sets run before the calibration."""
+    text, calibrated = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(text):
         print_tables(data["ensembles"], data["summary"])
         for free, (name, label) in KAPPA_STUDIES.items():
             print_kappa(data["kappa"][name], label)
         print_switch_on(data["switch_on"])
         print_couplings(data["couplings"])
-    return text.getvalue()
+    if data.get("calibrated") is None:
+        return text.getvalue()
+    with contextlib.redirect_stdout(calibrated):
+        print_calibrated(data["calibrated"])
+        if text.getvalue():
+            print(f"\n## Before the calibration: {BEFORE_LABEL}")
+    return calibrated.getvalue() + text.getvalue()
 
 
 def write_tables(data, tables):
@@ -640,7 +939,42 @@ def write_tables(data, tables):
     with open(os.path.join(tables, "summary.json"), "w") as f:
         json.dump({label: {"rows": rows, "slope0": s0, "slope70": s70}
                    for label, (rows, s0, s70) in data["summary"].items()}, f, indent=1, default=float)
+    cal = data.get("calibrated")
+    if cal is not None:
+        write_calibrated_tables(cal, tables)
     return markdown
+
+
+def write_calibrated_tables(cal, tables):
+    """The tables of the study at the calibrated coupling (calibrated_study,
+    completed by study_data) into the directory tables, those with data
+    only: thetam_calibrated.txt (Fig. 7), tcon_calibrated.txt (Fig. 8),
+    kappa_calibrated.txt (the sensitivity set, kappa.txt's format),
+    table1.txt ("H grains base length wall0 wall70 cost paperN paper")
+    and summary_calibrated.json (the rows and slopes of each geometry, the
+    sensitivity set's rows and summary, Table 1's rows)."""
+    if cal["thetam"] is not None:
+        with open(os.path.join(tables, "thetam_calibrated.txt"), "w") as f:
+            f.write(_table_text(cal["thetam"]))
+    if cal["tcon"]:
+        with open(os.path.join(tables, "tcon_calibrated.txt"), "w") as f:
+            f.writelines(f"{name} {th:g} {t:g} {kind}\n" for name, th, t, kind in cal["tcon"])
+    if cal["kappa_table"]:
+        with open(os.path.join(tables, "kappa_calibrated.txt"), "w") as f:
+            f.writelines(f"{k:g} {H:g} {seed} {shift:g} {mu:g} {onset:g} {g}\n"
+                         for k, H, seed, shift, mu, onset, g in cal["kappa_table"])
+    if cal["table1"]:
+        with open(os.path.join(tables, "table1.txt"), "w") as f:
+            f.writelines(f"{H:g} {n} {nb} {length:g} {w0:g} {w70:g} {cost:g} {pn or 'nan'} {paper:g}\n"
+                         for H, n, nb, length, h0, h70, w0, w70, cost, pn, paper in cal["table1"])
+    with open(os.path.join(tables, "summary_calibrated.json"), "w") as f:
+        json.dump({"kappa_scale": KAPPA,
+                   "geometries": {label: {"rows": rows, "slope0": s0, "slope70": s70}
+                                  for label, (rows, s0, s70) in cal["summary"].items()},
+                   "sensitivity": {"rows": cal["sensitivity"],
+                                   "summary": {f"{k:g}": v
+                                               for k, v in sensitivity_summary(cal["sensitivity"]).items()}},
+                   "table1": cal["table1"]}, f, indent=1, default=float)
 
 
 def draw_figures(data, figdir):
@@ -655,16 +989,33 @@ def draw_figures(data, figdir):
         written.append(os.path.join(figdir, name))
         return written[-1]
 
-    label = data["label"]
-    if label is not None:
-        couplings = [(rows, f"kappa_scale {kappa_scale:g}" + (" (the calibrated coupling)" if kappa_scale == KAPPA
-                                                               else "") + ", switched on at rest")
-                     for kappa_scale, rows in data["couplings_tables"]]
-        coupling = f"kappa_scale {SET_KAPPA:g}" + (" (run before the calibration)" if SET_KAPPA != KAPPA else "")
+    label, cal = data["label"], data.get("calibrated")
+    couplings = [(rows, f"kappa_scale {kappa_scale:g}" + (" (the calibrated coupling)" if kappa_scale == KAPPA
+                                                           else "") + ", switched on at rest")
+                 for kappa_scale, rows in data["couplings_tables"]]
+    coupling = f"kappa_scale {SET_KAPPA:g}" + (" (run before the calibration)" if SET_KAPPA != KAPPA else "")
+    if cal is not None and cal["thetam"] is not None:
+        # the study's result at the calibrated coupling; the free-ends set
+        # before the calibration beside it, labelled as the sensitivity study
+        before = data["thetam_free"] if data["thetam_free"] is not None else (
+            data["thetam"] if label is not None and data["free"] == label else None)
+        figs.fig_thetam(out("fig7_thetam.png"), cal["thetam"],
+                        f"{cal['label']}, {CALIBRATED_LABEL}: the study's result",
+                        before, f"{data['free']}, {BEFORE_LABEL}", couplings, dpi=100)
+    elif label is not None:
         figs.fig_thetam(out("fig7_thetam.png"), data["thetam"], label, data["thetam_free"], data["free"], couplings,
                         dpi=100, coupling=coupling)
+    if cal is not None and cal["tcon"]:
+        figs.fig_tcon(out("fig8_tcon.png"), cal["tcon"] + data["paper_tcon"], dpi=100, coupling=CALIBRATED_LABEL)
+        if data["tcon"]:
+            figs.fig_tcon(out(f"fig8_tcon_k{SET_KAPPA:g}.png"), data["tcon"] + data["paper_tcon"], dpi=100,
+                          coupling=BEFORE_LABEL)
+    elif label is not None:
         figs.fig_tcon(out("fig8_tcon.png"), data["tcon"] + data["paper_tcon"], dpi=100, coupling=coupling)
-        by_h = data["ensembles"][label]
+    if label is not None or (cal is not None and cal["label"] is not None):
+        # the figures from dumps and series: the calibrated ensemble's where it is there
+        by_h = cal["ensembles"][cal["label"]] if cal is not None and cal["label"] is not None \
+            else data["ensembles"][label]
         for H in (6.0, 14.4):
             packs = by_h.get(H, [])
             if not packs:
@@ -687,13 +1038,18 @@ def draw_figures(data, figdir):
             if sers:
                 figs.fig_sigma(out(f"fig6_9_sigma_H{H:g}.png"),
                                figs.sigma_runs([s for s, _ in sers], [th for _, th in sers]), dpi=80)
-        held = held_series(by_h.get(6.0, []), "f0", PAPER_TCON_ANGLE_H6)
+        # the runs with longer holds of the uniform criterion are the sets' before the calibration
+        held = held_series(data["ensembles"][label].get(6.0, []) if label is not None else [], "f0",
+                           PAPER_TCON_ANGLE_H6)
         if held:
             figs.fig_sigma(out("tcon_hold_sigma_H6.png"),
                            figs.sigma_runs(held, [PAPER_TCON_ANGLE_H6] * len(held)), dpi=80)
     for name, rows in data["kappa_tables"].items():
         figs.fig_kappa(out("kappa_shift" + name[len("kappa"):] + ".png"),
                        [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in rows], dpi=80)
+    if cal is not None and cal["kappa_table"]:
+        figs.fig_kappa(out("kappa_shift_calibrated.png"),
+                       [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in cal["kappa_table"]], dpi=270)
     return written
 
 

@@ -1,0 +1,203 @@
+"""acoustic_tools.avalanche_collect on synthetic jobs of issue 42's production
+sets at the calibrated coupling (kappa_scale 0.17; job.json and result.json
+written here as the run command and the decks write them): theta_m per
+thickness with standard errors and the shift paired by packing, t_con above
+theta_m (tcon_cal), the shift against kappa_scale (sensitivity), the
+2000 d layers beside the 400 d ones (paper_length) and Table 1's
+(t70 - t0)/t70 from the wall times (table1), each against values worked out
+by hand; the sets run before the calibration (0.3) stay apart."""
+import json
+import os
+
+import numpy as np
+import pytest
+
+from acoustic_tools.avalanche_study import (KAPPA, TABLE1, deposit_settings, packing_settings, ramp_settings,
+                                            table1_settings)
+from test_avalanche_collect import Pack, angle, ramp_result, write
+
+
+def uniform_at(theta, start=None):
+    """The angle states of a ramp from start (default theta - 1) that flows uniformly at theta."""
+    start = theta - 1.0 if start is None else start
+    return [(th, "stable") for th in np.arange(start, theta, 0.5)] + [(theta, "uniform")]
+
+
+def ramps(p, f0, f70, tcon0=0.5, tcon70=0.2):
+    if f0 is not None:
+        p.ramp("f0", uniform_at(f0), f0, tcon0)
+    if f70 is not None:
+        p.ramp("f70", uniform_at(f70), f70, tcon70, mu=0.6)
+    return p
+
+
+@pytest.fixture
+def thickness(tmp_path):
+    """Free-ends 400 d packings at 0.17 (H = 3 d: three packings, the third
+    without its 70 kHz ramp; H = 6 d: two) and the same packings' ramps at
+    0.3 (the sets before the calibration: other angles)."""
+    for seed, f0, f70 in ((1, 20.0, 15.0), (2, 21.0, 17.5), (3, 19.5, None)):
+        ramps(Pack(tmp_path, 3, seed, 3.0, kappa=KAPPA), f0, f70)
+        ramps(Pack(tmp_path, 3, seed, 3.0, kappa=0.3), 22.0, 21.0)
+    for seed, f0, f70 in ((1, 18.0, 16.0), (2, 17.5, 15.5)):
+        ramps(Pack(tmp_path, 6, seed, 6.1, kappa=KAPPA), f0, f70)
+        ramps(Pack(tmp_path, 6, seed, 6.1, kappa=0.3), 18.5, 14.5)
+    return tmp_path
+
+
+def markdown(collect, top, tables):
+    return collect.write_tables(collect.study_data(str(top)), str(tables))
+
+
+def test_theta_m_per_thickness_with_standard_errors_and_the_paired_shift(collect, thickness, tmp_path):
+    cal = collect.calibrated_study(str(thickness))
+    assert list(cal["ensembles"]) == ["free ends, 400 d"] and cal["label"] == "free ends, 400 d"
+    r3, r6 = cal["summary"]["free ends, 400 d"][0]
+    # 0 kHz over the three packings: 20, 21, 19.5
+    assert r3["theta0"] == pytest.approx((np.mean([20, 21, 19.5]), np.std([20, 21, 19.5], ddof=1), 3))
+    # the shift paired by packing: 20 - 15 = 5 and 21 - 17.5 = 3.5 (packing 3 has no 70 kHz ramp)
+    assert r3["shift"] == pytest.approx((4.25, 1.5 / np.sqrt(2), 2))
+    assert collect.standard_error(r3["shift"])[0] == pytest.approx(0.75)
+    assert r6["shift"] == pytest.approx((2.0, 0.0, 2))
+    # the ensembles at 0.3 are those of the same packings' ramps at 0.3 only
+    before = collect.ensembles(str(thickness))["free ends, 400 d"]
+    assert {p["f0"][0] for p in before[3.0]} == {22.0} and {p["f70"][0] for p in before[6.0]} == {14.5}
+    assert collect.kappa_study(str(thickness), free=1) == [], "the 0.17 ramps are not the kappa study before"
+    text = markdown(collect, thickness, tmp_path / "tables")
+    assert text.startswith("\n## The study at kappa_scale 0.17 (the calibrated coupling)\n")
+    calibrated, before_text = text.split("## Before the calibration: kappa_scale 0.3 (run before the calibration: "
+                                         "sensitivity study)\n")
+    # mean ± s.d. (s.e.): 20.17 ± 0.76 (0.44); 16.25 ± 1.77 (1.25); shift 4.25 ± 1.06 (0.75), 2 pairs
+    assert ("| 3 (3.00) | 3 | 500 + 80, 80 d | 20.17 ± 0.76 (0.44)° | 16.25 ± 1.77 (1.25)° | 4.25 ± 1.06 (0.75)° "
+            "| 2 | 20 (stated)° | 14.5 (stated)° | 5.5 (stated)° |") in calibrated
+    # at 6 d the paper's values are interpolated (20 - 3 * 3 / 11.4 = 19.2) and said so
+    assert ("| 6 (6.10) | 2 | 500 + 80, 80 d | 17.75 ± 0.35 (0.25)° | 15.75 ± 0.35 (0.25)° | 2.00 ± 0.00 (0.00)° "
+            "| 2 | ≈ 19.2 (interpolated)° | ≈ 17.2 (interpolated)° | ≈ 2 (its text)° |") in calibrated
+    assert "- H = 3 d: s1: 20 / 15°, 5°, 0.50 / 0.20 s; s2: 21 / 17.5°, 3.5°" in calibrated
+    assert "| 22.00 ± 0.00° | 21.00 ± 0.00° |" in before_text and "22.00" not in calibrated
+    # Fig. 7's table of the calibrated ensemble: H/d, means and s.d., paper's stated values
+    rows = np.loadtxt(tmp_path / "tables" / "thetam_calibrated.txt")
+    assert rows[0, :5] == pytest.approx([3.0, 20 + 1 / 6, np.std([20, 21, 19.5], ddof=1), 16.25,
+                                         np.std([15, 17.5], ddof=1)], abs=1e-4)   # 6 digits (%g)
+    assert rows[0, 5:] == pytest.approx([20, 14.5]) and np.isnan(rows[1, 5:]).all()
+    summary = json.loads((tmp_path / "tables" / "summary_calibrated.json").read_text())
+    assert summary["kappa_scale"] == KAPPA
+    assert summary["geometries"]["free ends, 400 d"]["rows"][0]["shift"] == pytest.approx([4.25, 1.5 / np.sqrt(2), 2])
+
+
+def test_tcon_at_the_same_distance_above_theta_m(collect, tmp_path):
+    s1 = ramps(Pack(tmp_path, 6, 1, 6.0, kappa=KAPPA), 18.0, 16.0, tcon0=0.8, tcon70=0.3)
+    s2 = ramps(Pack(tmp_path, 6, 2, 6.0, kappa=KAPPA), 17.5, 15.5, tcon0=0.6, tcon70=0.1)
+    for theta, t in ((19.0, 0.4), (20.0, 0.3), (21.0, 0.2)):
+        s1.tcon("f0", theta, t)
+    for theta, t in ((18.5, 0.6), (19.5, 0.5), (20.5, None), (19.0, 0.7)):
+        s2.tcon("f0", theta, t)
+    s1.tcon("f70", 17.0, 0.2)
+    s2.tcon("f70", 16.5, 0.4)
+    packs = collect.calibrated_study(str(tmp_path))["ensembles"]["free ends, 400 d"][6.0]
+    assert collect.tcon_above(packs, "f0", 1.0) == [0.4, 0.6]
+    assert collect.tcon_above(packs, "f0", 3.0)[0] == 0.2 and np.isnan(collect.tcon_above(packs, "f0", 3.0)[1])
+    text = markdown(collect, tmp_path, tmp_path / "tables")
+    # at theta_m: 0.8, 0.6; +1: 0.4, 0.6; +2: 0.3, 0.5; +3: 0.2 and one not uniform; 19 deg: 0.4 (s1's +1) and 0.7
+    assert ("| 6 | 0 kHz | 0.70 ± 0.14 s (2) | 0.50 ± 0.14 s (2) | 0.40 ± 0.14 s (2) "
+            "| 0.20 s (1; 1 not uniform within 1.3 s) | 0.55 ± 0.21 s (2) | 1.15 s at 19° (stated) |") in text
+    assert ("| 6 | 70 kHz | 0.20 ± 0.14 s (2) | 0.30 ± 0.14 s (2) | — | — | — "
+            "| 0.3 s at 19° (stated) |") in text
+    lines = (tmp_path / "tables" / "tcon_calibrated.txt").read_text().splitlines()
+    assert "H6_0kHz_free_ends 18 0.8 thetam" in lines and "H6_0kHz_free_ends 19 0.7 run" in lines
+    assert "H6_70kHz_free_ends 16.5 0.4 run" in lines and len(lines) == 4 + 6 + 2
+
+
+def test_shift_against_kappa_scale_at_14_4_d(collect, tmp_path, capsys):
+    # the 0 Hz ramps at 0.17; 70 kHz at 0.17: 15, 15.5; 0.14: 16, 16.5; 0.21: 14, 15
+    for seed, f0, f70, low, high in ((1, 17.0, 15.0, 16.0, 14.0), (2, 18.0, 15.5, 16.5, 15.0)):
+        ramps(Pack(tmp_path, 14.4, seed, 13.9, kappa=KAPPA), f0, f70)
+        for k, t70 in ((0.14, low), (0.21, high)):
+            Pack(tmp_path, 14.4, seed, 13.9, kappa=k).ramp("f70", uniform_at(t70), t70, 0.3, mu=0.7)
+    rows = collect.sensitivity_study(str(tmp_path))
+    assert [r[:6] for r in rows] == [(0.14, 14.4, "1", 17.0, 16.0, 1.0), (0.14, 14.4, "2", 18.0, 16.5, 1.5),
+                                     (0.17, 14.4, "1", 17.0, 15.0, 2.0), (0.17, 14.4, "2", 18.0, 15.5, 2.5),
+                                     (0.21, 14.4, "1", 17.0, 14.0, 3.0), (0.21, 14.4, "2", 18.0, 15.0, 3.0)]
+    summary = collect.sensitivity_summary(rows)
+    assert summary[0.17][1] == pytest.approx((2.25, 0.5 / np.sqrt(2), 2))
+    assert collect.standard_error(summary[0.17][1])[0] == pytest.approx(0.25)
+    assert summary[0.21][1] == pytest.approx((3.0, 0.0, 2))
+    assert collect.kappa_study(str(tmp_path), free=1) == []
+    text = markdown(collect, tmp_path, tmp_path / "tables")
+    assert ("- kappa_scale 0.17: θ_m 70 kHz 15.25 ± 0.35 (0.25)° (n = 2), "
+            "shift 2.25 ± 0.35 (0.25)° (pairs: 2)") in text
+    assert ("- kappa_scale 0.14: θ_m 70 kHz 16.25 ± 0.35 (0.25)° (n = 2), "
+            "shift 1.25 ± 0.35 (0.25)° (pairs: 2)") in text
+    assert "| 0.21 | 2 | 18° | 15° | 3° | 0.700 | 3° |" in text
+    assert (tmp_path / "tables" / "kappa_calibrated.txt").read_text().splitlines()[0] == \
+        "0.14 14.4 1 1 0.7 1 free_ends"
+    assert "left out" not in capsys.readouterr().err
+
+
+def test_paper_length_layers_beside_the_400_d_layers(collect, tmp_path):
+    ramps(Pack(tmp_path, 6, 1, 6.0, kappa=KAPPA), 18.0, 16.0)
+    ramps(Pack(tmp_path, 6, 2, 6.0, kappa=KAPPA), 18.5, 16.0)
+    long = packing_settings(6, 1, layer=2000)
+    write(tmp_path, deposit_settings(long), {"grains": 12680, "base": 2100, "length": 2100.0, "H_measured": 6.0})
+    for freq, theta in ((0, 17.5), (70e3, 16.5)):
+        write(tmp_path, ramp_settings(long, freq, window=571),
+              ramp_result([angle(th, st) for th, st in uniform_at(theta)], theta, 0.4))
+    cal = collect.calibrated_study(str(tmp_path))
+    assert list(cal["ensembles"]) == ["free ends, 400 d", "free ends, 2000 d"]
+    assert cal["ensembles"]["free ends, 2000 d"][6.0][0]["window"] == 571
+    text = markdown(collect, tmp_path, tmp_path / "tables")
+    part = text.split("### layers of paper 000's length")[1]
+    assert "| 6 | 2000 d, 571 d | 1 | 12680 + 2100 | 17.50° | 16.50° | 1.00° | 0.40 / 0.40 | 60 / 60 |" in part
+    assert "| 6 | 400 d, 200 d | 2 | 500 + 80 | 18.25 ± 0.35° | 16.00 ± 0.00° | 2.25 ± 0.35 (0.25)° " in part
+
+
+def test_table1_from_the_wall_times(collect, tmp_path):
+    # paper 000's N = 8 000 at 3 d and 32 000 at 14.4 d (49 % and 26 %);
+    # here (t70 - t0)/t70 = (150 - 100)/150 = 33 % and (1250 - 1000)/1250 = 20 %
+    for (H, n), grains, walls in zip(TABLE1, (7990, 31950), ((100.0, 150.0), (1000.0, 1250.0))):
+        for freq, wall in zip((0, 70e3), walls):
+            s = table1_settings(H, n, freq)
+            assert collect.one_angle(s) and s["kappa"] == KAPPA
+            write(tmp_path, s, dict(ramp_result([angle(10, "stable")], None, None), wall_time=wall))
+        write(tmp_path, deposit_settings({k: s[k] for k in ("H", "seed", "free", "layer", "Edem", "rest")}),
+              {"grains": grains, "base": int(s["layer"]) + 100, "length": s["layer"] + 100, "H_measured": H})
+    rows = collect.table1_study(str(tmp_path))
+    assert [(r[0], r[1], r[9], r[10]) for r in rows] == [(3.0, 7990, 8000, 0.49), (14.4, 31950, 32000, 0.26)]
+    assert [r[8] for r in rows] == pytest.approx([50 / 150, 250 / 1250])
+    assert rows[0][4:6] == (0.1, 0.1), "the same time at the angle at both frequencies"
+    cal = collect.calibrated_study(str(tmp_path))
+    assert cal["ensembles"] == {}, "one-angle runs are no ramps of theta_m"
+    text = markdown(collect, tmp_path, tmp_path / "tables")
+    assert "| 3 | 7990 + 2786, 2786 d | 0.1 / 0.1 | 100 / 150 | 33 % | 49 % (N = 8000) |" in text
+    assert "| 14.4 | 31950 + 2339, 2339 d | 0.1 / 0.1 | 1000 / 1250 | 20 % | 26 % (N = 32000) |" in text
+    assert "## Before the calibration" not in text, "no set before the calibration here"
+    assert (tmp_path / "tables" / "table1.txt").read_text().splitlines() == [
+        "3 7990 2786 2786 100 150 0.333333 8000 0.49", "14.4 31950 2339 2339 1000 1250 0.2 32000 0.26"]
+
+
+def test_figures_draw_the_calibrated_study_beside_the_sensitivity_study(collect, thickness, tmp_path, monkeypatch):
+    Pack(thickness, 6, 1, 6.1, kappa=KAPPA).tcon("f0", 19.0, 0.4)
+    Pack(thickness, 6, 1, 6.1, kappa=0.3).tcon("f0", 19.5, 0.3)
+    # a ramp at the sensitivity set's 0.21 at 3 d: neither the sensitivity
+    # set (14.4 d) nor the kappa_scale study before the calibration
+    Pack(thickness, 3, 1, 3.0, kappa=0.21).ramp("f70", uniform_at(16.0), 16.0, 0.3)
+    data = collect.study_data(str(thickness))
+    assert data["calibrated"]["sensitivity"] == [] and data["kappa"]["kappa_free"] == []
+    assert ("H6_0kHz_free_ends", 19.0, 0.4, "run") in data["calibrated"]["tcon"]
+    assert ("H6_0kHz_free_ends", 19.5, 0.3, "run") in data["tcon"]
+    drawn = {}
+    fig_thetam = collect.figs.fig_thetam
+
+    def spy(path, table, label, free, free_label, *args, **options):
+        drawn.update(table=np.asarray(table), label=label, free=np.asarray(free), free_label=free_label)
+        return fig_thetam(path, table, label, free, free_label, *args, **options)
+
+    monkeypatch.setattr(collect.figs, "fig_thetam", spy)
+    written = collect.draw_figures(data, str(tmp_path / "figures"))
+    # Fig. 7: the 0.17 ensemble as the study's result, the 0.3 one beside it as the sensitivity study
+    assert drawn["label"] == "free ends, 400 d, kappa_scale 0.17 (the calibrated coupling): the study's result"
+    assert drawn["free_label"] == ("free ends, 400 d, kappa_scale 0.3 (run before the calibration: "
+                                   "sensitivity study)")
+    assert drawn["table"][:, 3] == pytest.approx([16.25, 15.75]) and drawn["free"][:, 3] == pytest.approx([21, 14.5])
+    assert [os.path.basename(w) for w in written] == ["fig7_thetam.png", "fig8_tcon.png", "fig8_tcon_k0.3.png"]
+    assert all(open(w, "rb").read(4) == b"\x89PNG" for w in written)
