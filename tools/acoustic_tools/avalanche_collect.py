@@ -617,9 +617,10 @@ def with_error(ms, digits=2):
 def tcon_above(packs, tag, step):
     """t_con of each packing's t_con run `step` deg above its own theta_m at
     the ramp tag (nan: not uniform within 0.1 + tfollow s); packings
-    without such a run are not listed."""
+    without such a run are not listed.  The angle is theta_m + step to
+    0.1 deg, as avalanche_study.tcon_settings writes it."""
     return [t for p in packs if np.isfinite(p[tag][0])
-            for th, t in p[f"tcon_{tag}"] if abs(th - p[tag][0] - step) < 1e-6]
+            for th, t in p[f"tcon_{tag}"] if abs(th - float(f"{p[tag][0] + step:.1f}")) < 1e-6]
 
 
 def times_text(times):

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from acoustic_tools.avalanche_study import (KAPPA, TABLE1, deposit_settings, packing_settings, ramp_settings,
-                                            table1_settings)
+                                            table1_settings, tcon_settings)
 from test_avalanche_collect import Pack, angle, ramp_result, write
 
 
@@ -201,3 +201,58 @@ def test_figures_draw_the_calibrated_study_beside_the_sensitivity_study(collect,
     assert drawn["table"][:, 3] == pytest.approx([16.25, 15.75]) and drawn["free"][:, 3] == pytest.approx([21, 14.5])
     assert [os.path.basename(w) for w in written] == ["fig7_thetam.png", "fig8_tcon.png", "fig8_tcon_k0.3.png"]
     assert all(open(w, "rb").read(4) == b"\x89PNG" for w in written)
+
+
+def test_the_production_sets_of_issue_42_reach_the_tables(collect, tmp_path):
+    # every job of the sets thickness, tcon_cal, sensitivity, paper_length
+    # and table1 as avalanche_study.production writes its job.json, with
+    # results: theta_m 20 - 0.25 H (+ 0.5 for packing 2) at 0 Hz, 3 deg lower at
+    # 70 kHz, 2 deg lower at kappa_scale 0.14, 4 deg lower at 0.21
+    from acoustic_tools import avalanche_study as a
+
+    def theta_of(s):
+        theta = 20.0 - 0.25 * s["H"] + (0.5 if s["seed"] == 2 else 0.0)
+        return theta if s["freq"] == 0 else theta - {0.14: 2.0, 0.17: 3.0, 0.21: 4.0}[s["kappa"]]
+
+    def deposit_of(s):
+        packing = {k: s[k] for k in ("H", "seed", "free", "layer", "Edem", "rest")}
+        write(tmp_path, deposit_settings(packing), {"grains": int(round(a.GRAINS_PER_AREA * s["H"] * s["layer"])),
+                                                    "base": int(s["layer"]) + 100, "length": s["layer"] + 100,
+                                                    "H_measured": s["H"]})
+
+    for name in ("thickness", "sensitivity", "paper_length", "table1"):
+        for _, s in a.production(name):
+            deposit_of(s)
+            if collect.one_angle(s):
+                write(tmp_path, s, dict(ramp_result([angle(10, "stable")], None, None),
+                                        wall_time=100.0 if s["freq"] == 0 else 150.0))
+            else:
+                theta = theta_of(s)
+                write(tmp_path, s, ramp_result([angle(th, st) for th, st in uniform_at(theta)], theta, 0.5))
+    for _, (ramp, options) in a.production("tcon_cal"):
+        theta_m = theta_of(ramp)
+        for theta in [theta_m + step for step in options["steps"]] + [x for x in options["angles"] if x > theta_m]:
+            s = tcon_settings(ramp, theta)
+            write(tmp_path, s, ramp_result([angle(s["theta"], "uniform")], s["theta"], 0.3))
+    data = collect.study_data(str(tmp_path))
+    assert data["ensembles"] == {} and data["label"] is None, "nothing at 0.3"
+    cal = data["calibrated"]
+    by_h = cal["ensembles"]["free ends, 400 d"]
+    assert sorted(by_h) == [3.0, 6.0, 8.7, 11.4, 14.4] and {len(packs) for packs in by_h.values()} == {4}
+    rows = cal["summary"]["free ends, 400 d"][0]
+    # the shift is 3 deg for every packing: mean 3, s.d. 0, four pairs
+    assert {r["shift"] for r in rows} == {(3.0, 0.0, 4)}
+    assert rows[0]["theta0"] == pytest.approx((19.25 + 0.125, np.std([19.25, 19.75, 19.25, 19.25], ddof=1), 4))
+    # t_con runs at theta_m + 1, 2, 3 at 6, 11.4 and 14.4 d, and 19 deg at 6 d (above every theta_m there)
+    assert [len(collect.tcon_above(by_h[H], "f70", 2.0)) for H in (6.0, 11.4, 14.4)] == [4, 4, 4]
+    assert len(collect.tcon_runs_at_angle(by_h[6.0], "f0", 19.0)) == 4
+    assert {r[0]: r[5] for r in cal["sensitivity"]} == {0.14: 2.0, 0.17: 3.0, 0.21: 4.0}
+    assert len(cal["sensitivity"]) == 12
+    assert sorted(cal["ensembles"]["free ends, 2000 d"]) == [6.0, 14.4]
+    assert [(r[0], r[9]) for r in cal["table1"]] == [(3.0, 8000), (14.4, 32000)]
+    assert [r[8] for r in cal["table1"]] == pytest.approx([1 / 3, 1 / 3])
+    text = collect.write_tables(data, str(tmp_path / "tables"))
+    assert "Before the calibration" not in text and "### layers of paper 000's length" in text
+    assert sorted(os.listdir(tmp_path / "tables")) == [
+        "kappa_calibrated.txt", "summary.json", "summary_calibrated.json", "table1.txt", "tables.md",
+        "tcon_calibrated.txt", "thetam_calibrated.txt"]
