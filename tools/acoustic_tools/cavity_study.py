@@ -8,7 +8,6 @@
   collect   OUT/summary.json and OUT/tables.md (acoustic_tools.cavity_collect)
   figures   the PNG figures (acoustic_tools.cavity_figures)
 """
-import concurrent.futures
 import math
 import os
 import shutil
@@ -98,11 +97,8 @@ def run(args):
         for name, values in SETS[set_name].items():
             directory = os.path.join(out, set_name, name)
             if study.read_result(directory) is None:
-                jobs.append((directory, job_settings(set_name, name, *values)))
-    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        running = [pool.submit(run_job, lmp, here, directory, settings, args.ranks) for directory, settings in jobs]
-        for finished in concurrent.futures.as_completed(running):
-            print(finished.result(), flush=True)
+                jobs.append((lmp, here, directory, job_settings(set_name, name, *values), args.ranks))
+    study.run_jobs(run_job, jobs, args.jobs)
 
 
 def collect(args):

@@ -25,8 +25,6 @@ job.json.  Directory names keep the texts of the pressure and the piston
 given on the command line (p1e-4, _m0.1, _v0), as the former run_production.sh named
 them.
 """
-import concurrent.futures
-import math
 import os
 import re
 import shutil
@@ -219,10 +217,7 @@ def run(args):
         if study.read_result(directory) is None:
             jobs.append((os.path.basename(directory), directory, settings,
                          lattice_command(lmp, here, directory, settings, text)))
-    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        running = [pool.submit(_run_job, *job) for job in jobs]
-        for finished in concurrent.futures.as_completed(running):
-            print(finished.result(), flush=True)
+    study.run_jobs(_run_job, jobs, args.jobs)
 
 
 def collect(args):

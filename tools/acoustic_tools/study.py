@@ -15,6 +15,7 @@ Each study has one entry point, `examples/<study>/study`, with the
 subcommands `run`, `collect` and `figures` (see `main`).
 """
 import argparse
+import concurrent.futures
 import json
 import math
 import os
@@ -104,6 +105,15 @@ def lammps_variables(settings, names):
     for name in names:
         arguments += ["-var", name, str(settings[name])]
     return arguments
+
+
+def run_jobs(run_one, jobs, workers):
+    """run_one(*job) for every job, `workers` at a time (each one a LAMMPS
+    process), printing what each returns as it finishes."""
+    with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
+        running = [pool.submit(run_one, *job) for job in jobs]
+        for finished in concurrent.futures.as_completed(running):
+            print(finished.result(), flush=True)
 
 
 def main(description, commands, argv=None):
