@@ -933,10 +933,21 @@ def _dump_columns(path):
     return [np.asarray(snapshot[k], dtype=float) for k in range(1, 6)]
 
 
+ORDINALS = ("", "second-", "third-", "fourth-", "fifth-")
+
+
 def mode_kind(index, selected):
-    """the kind of a mode of Fig. 10 (index into the ascending modes)"""
-    names = {"lowest": "lowest non-zero", "strongest": "large a_n b_n", "localised": "localised, high f"}
-    return next(names[kind] for kind, indices in selected.items() if index in indices)
+    """the kind of a mode of Fig. 10 (index into the ascending modes;
+    selected: sound_modes.selected_modes): the lowest non-zero modes by
+    their rank among the non-zero ones (lowest, second-lowest, ...), a mode
+    of large |a_n b_n|, or the localised mode of high frequency"""
+    names = {"strongest": "large $|a_n b_n|$", "localised": "localised, high $f$"}
+    for kind, indices in selected.items():
+        if index in indices:
+            if kind == "lowest":
+                return f"{ORDINALS[sorted(indices).index(index)]}lowest non-zero"
+            return names[kind]
+    raise ValueError(f"mode {index} is none of the selected modes {selected}")
 
 
 def packing_figures(out, per_sample, found, figdir):
@@ -972,7 +983,8 @@ def packing_figures(out, per_sample, found, figdir):
     segments = sound_modes.network_segments(data["grains"], data["contacts"], width, height)
     sound_figures.fig1_network(data["grains"], segments, f, k, width, height,
                                os.path.join(figdir, "fig1_network_p1e-4.png"),
-                               f"p = 1e-4, {len(tall)} packings (grain-grain contacts)")
+                               f"p = 1e-4: (a), (b) {shown['sample']}; (c) {len(tall)} packings, "
+                               "grain-grain contacts")
     histogram = sound_modes.direction_histogram(directions)
     shown["F2"] = {name: histogram[name]["F2"] for name in ("all", "strong", "weak")}
     sound_figures.fig2_directions(histogram, os.path.join(figdir, "fig2_directions_p1e-4.png"),
@@ -1011,9 +1023,13 @@ def packing_figures(out, per_sample, found, figdir):
     for m in settings["modes"]:
         x, y, radius, ux, uy = _dump_columns(os.path.join(directory, f"mode_{m}.dump"))
         i = m - 1
-        shapes.append((f"n = {i} ({mode_kind(i, selected)})\nf = {found_modes['omega'][i] / (2 * math.pi):.4g}, "
-                       f"PR = {data['participation'][i]:.2f}", x, y, radius, ux, uy))
-    sound_figures.fig10_modes(shapes, width, height, os.path.join(figdir, "fig10_modes_p1e-4.png"))
+        shapes.append((f"n = {i}\n{mode_kind(i, selected)}\n$f$ = {found_modes['omega'][i] / (2 * math.pi):.3g}, "
+                       f"PR = {data['participation'][i]:.2g}", x, y, radius, ux, uy))
+    sound_figures.fig10_modes(shapes, width, height, os.path.join(figdir, "fig10_modes_p1e-4.png"),
+                              f"p = 1e-4, {shown['sample']}: n from 0 ({zero_modes} zero modes first), "
+                              f"$f$ in {sound_figures.FREQUENCY_UNIT},\n"
+                              f"PR the participation ratio; arrows: the translations, the largest "
+                              f"{sound_figures.ARROWS_LARGEST:g} $d$ long")
     damped = {0.0: sound.read_pulse(os.path.join(found[chosen], "pulse_A.dat"))}
     for zeta in settings["damping"]:
         damped[float(zeta)] = sound.read_pulse(os.path.join(directory, f"pulse_damped_{zeta:g}.dat"))

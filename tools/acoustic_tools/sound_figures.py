@@ -1,6 +1,8 @@
 """Figures of paper 003 (sound in confined packings) from the results that
 acoustic_tools.sound_collect gathers (Figs. 1-12); matplotlib, PNG.  Each function takes
 plain arrays or dicts, so it also serves users' own runs."""
+import math
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -10,10 +12,12 @@ import numpy as np  # noqa: E402
 from . import sound  # noqa: E402
 
 
-def _save(fig, path, dpi=120, colours=None):
-    """tight layout, PNG; colours: a palette of that many colours (the
-    drawings of grains and arrows stay small files)"""
-    fig.tight_layout()
+def _save(fig, path, dpi=120, colours=None, tight=True):
+    """tight layout (unless told: a figure laid out already), PNG; colours:
+    a palette of that many colours (the drawings of grains and arrows stay
+    small files)"""
+    if tight:
+        fig.tight_layout()
     if colours is None:
         fig.savefig(path, dpi=dpi)
     else:
@@ -200,43 +204,121 @@ def stress_ratio_against_overshoot(overshoot, ratio, pressure, path):
 
 
 # ---- figures of one packing's network and modes (sound_modes, in.figures)
+#
+# Figs. 1, 3 and 10 draw the packing itself; they share its drawing
+# (_packing_panel) and their type: sized for print at the paper's widths (one
+# column COLUMN, the page PAGE, inches), type of PRINT_TYPE points at that
+# size, PRINT_DPI dots per inch.  The study's reduced units: lengths in grain
+# diameters d, times in d sqrt(rho/E*), forces in E* d^2.
 
-def _grain_dots(ax, x, y, radius, width, height):
-    ax.scatter(x, y, s=(72.0 * 0.35 * np.asarray(radius) * 2.0 * 3.2 / width) ** 2 * 4, color="0.8", zorder=1,
-               linewidths=0)
+COLUMN, PAGE = 3.4, 7.0
+PRINT_TYPE = 10
+PRINT_DPI = 200
+PRINT_STYLE = {key: PRINT_TYPE for key in ("font.size", "axes.titlesize", "axes.labelsize", "xtick.labelsize",
+                                           "ytick.labelsize", "legend.fontsize", "legend.title_fontsize",
+                                           "figure.titlesize")}
+TIME_UNIT = r"$d\sqrt{\rho/E^*}$"
+FREQUENCY_UNIT = r"$\sqrt{E^*/\rho}\,/\,d$"
+GRAIN_DOT = 0.6          # the grey dot on a grain's centre, a fraction of its diameter
+NETWORK_LINE = 1.0       # Fig. 1: the width (points) of a contact line at the mean force (stiffness)
+ARROWS_LARGEST = 2.0     # Figs. 3, 10: the largest arrow is this long (d)
+
+
+def _packing_figure(size, rows, columns, aspect, left=0.55, right=0.1, bottom=0.5, top=0.6, gaps=0.3, hspace=0.8):
+    """a figure `size` inches wide (COLUMN or PAGE) of rows x columns panels
+    of one height/width ratio (aspect: the packing's), laid out in inches
+    (tight_layout leaves panels of fixed aspect small): the margins left,
+    right, bottom and top, the gaps between columns (one or one per gap)
+    and between rows (hspace) hold the labels and titles.  Returns the
+    figure and the axes (rows x columns)"""
+    gaps = np.broadcast_to(np.asarray(gaps, dtype=float), (columns - 1,))
+    panel = (size - left - right - gaps.sum()) / columns
+    tall = panel * aspect
+    height = bottom + rows * tall + (rows - 1) * hspace + top
+    fig = plt.figure(figsize=(size, height))
+    starts = left + np.concatenate(([0.0], np.cumsum(gaps + panel)))
+    axes = [[fig.add_axes([starts[c] / size, (bottom + (rows - 1 - r) * (tall + hspace)) / height, panel / size,
+                           tall / height]) for c in range(columns)] for r in range(rows)]
+    return fig, np.array(axes)
+
+
+def _packing_panel(ax, x, y, radius, width, height, xlabel=True, ylabel=True):
+    """one packing in the plane of the centres, as Figs. 1, 3 and 10 draw it:
+    a grey dot (GRAIN_DOT of the diameter, to scale) on each grain's centre,
+    the box 0 < x < width (periodic), 0 < y < height (the bottom wall, the
+    source, and the top wall, the detector), axes in grain diameters;
+    xlabel, ylabel: False on the inner panels of a grid (no labels, no
+    tick labels)"""
+    from matplotlib.collections import EllipseCollection
+    size = GRAIN_DOT * 2.0 * np.asarray(radius, dtype=float)
+    ax.add_collection(EllipseCollection(size, size, np.zeros(len(size)), units="xy",
+                                        offsets=np.column_stack((x, y)), offset_transform=ax.transData,
+                                        facecolors="0.75", linewidths=0, zorder=1))
     ax.set_xlim(0.0, width)
     ax.set_ylim(0.0, height)
     ax.set_aspect("equal")
-    ax.set_xticks([])
-    ax.set_yticks([])
+    ax.set_xticks(np.arange(0.0, width + 1e-9, 10.0))
+    ax.set_yticks(np.arange(0.0, height + 1e-9, 10.0))
+    ax.tick_params(labelbottom=xlabel, labelleft=ylabel)
+    if xlabel:
+        ax.set_xlabel(r"$x\,/\,d$")
+    if ylabel:
+        ax.set_ylabel(r"$y\,/\,d$")
+
+
+def _round_down(value):
+    """the largest 1, 2 or 5 times a power of ten not above value (> 0)"""
+    power = 10.0 ** math.floor(math.log10(value))
+    return max(m * power for m in (1.0, 2.0, 5.0) if m * power <= value * (1.0 + 1e-12))
+
+
+def _latex_number(value, digits=2):
+    """value as a x 10^k in mathtext"""
+    mantissa, exponent = f"{value:.{digits - 1}e}".split("e")
+    return rf"{mantissa}\times10^{{{int(exponent)}}}"
 
 
 def fig1_network(grains, segments, forces, stiffnesses, width, height, path, title):
     """Fig. 1: (a) the normal forces of one packing as lines of width
     proportional to the force, (b) the same for the normal stiffness
-    dF_n/dn, (c) the histograms of the forces and stiffnesses of many
-    packings, each over its mean (equal areas); grains: dict of x, y,
-    radius; segments: rows x0, y0, x1, y1, f_n, k_n (sound_modes.network_segments)"""
+    dF_n/dn, each with the key of its line widths (multiples of the mean,
+    the mean in reduced units), (c) the histograms of the forces and
+    stiffnesses of many packings, each over its mean (equal areas); grains:
+    dict of x, y, radius; segments: rows x0, y0, x1, y1, f_n, k_n
+    (sound_modes.network_segments); title: above the three panels"""
     from matplotlib.collections import LineCollection
-    fig, axes = plt.subplots(1, 3, figsize=(11.0, 4.2), gridspec_kw={"width_ratios": [1, 1, 1.1]})
-    for ax, column, label in ((axes[0], 4, "(a) normal forces"), (axes[1], 5, "(b) normal stiffnesses")):
-        _grain_dots(ax, grains["x"], grains["y"], grains["radius"], width, height)
-        values = segments[:, column]
-        lines = LineCollection(segments[:, :4].reshape(-1, 2, 2), linewidths=2.5 * values / values.mean(),
-                               colors="k", zorder=2)
-        ax.add_collection(lines)
-        ax.set_title(label, fontsize=9)
-    ax = axes[2]
-    f = np.asarray(forces) / np.mean(forces)
-    k = np.asarray(stiffnesses) / np.mean(stiffnesses)
-    bins = np.linspace(0.0, max(f.max(), k.max()), 60)
-    ax.hist(f, bins=bins, density=True, histtype="step", color="C0", label=r"$f_n / \langle f_n\rangle$")
-    ax.hist(k, bins=bins, density=True, histtype="step", color="C3", label=r"$k_n / \langle k_n\rangle$")
-    ax.set_xlabel("value / mean")
-    ax.set_ylabel("probability density")
-    ax.set_title("(c) " + title, fontsize=9)
-    ax.legend(frameon=False)
-    _save(fig, path, dpi=80, colours=32)
+    from matplotlib.lines import Line2D
+    with plt.rc_context(PRINT_STYLE):
+        fig, axes = _packing_figure(PAGE, 1, 3, height / width, bottom=1.25, top=0.65, gaps=(0.15, 0.8))
+        axes = axes[0]
+        below = 0.45 / (axes[0].get_position().height * fig.get_figheight())   # the key under the x label
+        panels = ((axes[0], 4, "(a) normal forces", "f_n", "E^*d^2"),
+                  (axes[1], 5, "(b) normal stiffnesses", "k_n", "E^*d"))
+        for ax, column, label, symbol, unit in panels:
+            _packing_panel(ax, grains["x"], grains["y"], grains["radius"], width, height, ylabel=ax is axes[0])
+            values = segments[:, column]
+            mean = values.mean()
+            ax.add_collection(LineCollection(segments[:, :4].reshape(-1, 2, 2),
+                                             linewidths=NETWORK_LINE * values / mean, colors="k", zorder=2))
+            ax.set_title(label)
+            multiples = (1, 2, 4)
+            ax.legend([Line2D([], [], color="k", lw=NETWORK_LINE * m) for m in multiples], [f"{m}" for m in multiples],
+                      title=rf"line width: ${symbol}/\langle {symbol}\rangle$" + "\n"
+                            + rf"$\langle {symbol}\rangle = {_latex_number(mean)}\,{unit}$",
+                      loc="upper center", bbox_to_anchor=(0.5, -below), ncol=3, frameon=False, handlelength=1.6,
+                      columnspacing=1.2, borderaxespad=0.0)
+        ax = axes[2]
+        f = np.asarray(forces) / np.mean(forces)
+        k = np.asarray(stiffnesses) / np.mean(stiffnesses)
+        bins = np.linspace(0.0, max(f.max(), k.max()), 60)
+        ax.hist(f, bins=bins, density=True, histtype="step", color="C0", label=r"$f_n / \langle f_n\rangle$")
+        ax.hist(k, bins=bins, density=True, histtype="step", color="C3", label=r"$k_n / \langle k_n\rangle$")
+        ax.set_xlabel("value / mean")
+        ax.set_ylabel("probability density")
+        ax.set_title("(c) histograms")
+        ax.legend(frameon=False)
+        fig.suptitle(title, y=1.0 - 0.12 / fig.get_figheight(), va="top")
+        _save(fig, path, dpi=PRINT_DPI, colours=64, tight=False)
 
 
 def fig2_directions(histogram, path, title):
@@ -263,20 +345,32 @@ def fig2_directions(histogram, path, title):
     _save(fig, path, dpi=80, colours=32)
 
 
-def _arrows(ax, x, y, u, v, scale):
-    ax.quiver(x, y, u, v, angles="xy", scale_units="xy", scale=1.0 / scale, width=0.004, headwidth=3,
-              headlength=3, zorder=3)
+def _arrows(ax, x, y, u, v, magnification):
+    """the displacements (u, v) of the grains as arrows from their centres,
+    magnified magnification times (lengths in d; an arrow shorter than its
+    head shrinks with it, no dot for the grains at rest); the Quiver, for a
+    key"""
+    return ax.quiver(x, y, u, v, angles="xy", scale_units="xy", scale=1.0 / magnification, units="xy",
+                     width=0.12, headwidth=3, headlength=3, headaxislength=2.7, minlength=0.0, zorder=3)
 
 
 def fig3_snapshot(x, y, radius, ux, uy, width, height, time, path, title):
-    """Fig. 3: the displacement of every grain at one time after the pulse,
-    as arrows (magnified so that the largest is 2 d long)"""
-    fig, ax = plt.subplots(figsize=(4.6, 5.0))
-    _grain_dots(ax, x, y, radius, width, height)
-    largest = np.max(np.hypot(ux, uy))
-    _arrows(ax, x, y, ux, uy, 2.0 / largest)
-    ax.set_title(f"{title}\nt = {time:g}, arrows: displacement x {2.0 / largest:.3g}", fontsize=9)
-    _save(fig, path, dpi=100, colours=16)
+    """Fig. 3: the displacement of every grain at one time after the pulse
+    (condition A, a unit pulse of the bottom wall), as arrows magnified so
+    that the largest is ARROWS_LARGEST d long, with a key arrow of a round
+    displacement (in d) and the time of the snapshot (in d sqrt(rho/E*))"""
+    with plt.rc_context(PRINT_STYLE):
+        fig, axes = _packing_figure(COLUMN, 1, 1, height / width, top=0.95)
+        ax = axes[0, 0]
+        _packing_panel(ax, x, y, radius, width, height)
+        largest = np.max(np.hypot(ux, uy))
+        magnification = ARROWS_LARGEST / largest
+        arrows = _arrows(ax, x, y, ux, uy, magnification)
+        key = _round_down(largest)
+        ax.quiverkey(arrows, 0.03, 1.05, key, rf"$u$ = {key:g} $d$ (arrows: $u\times${magnification:.3g})",
+                     labelpos="E", coordinates="axes")
+        ax.set_title(f"{title}\n$t$ = {time:g} {TIME_UNIT} after a unit pulse", pad=22)
+        _save(fig, path, dpi=PRINT_DPI, colours=16, tight=False)
 
 
 def fig9_modes(omega2, contribution, marked, zero_modes, path, title):
@@ -304,21 +398,26 @@ def fig9_modes(omega2, contribution, marked, zero_modes, path, title):
     _save(fig, path)
 
 
-def fig10_modes(shapes, width, height, path):
-    """Fig. 10: selected eigenmodes as arrows on the grains; shapes: list of
-    (label, x, y, radius, ux, uy), each magnified so that its largest arrow
-    is 2 d long"""
+def fig10_modes(shapes, width, height, path, title=None):
+    """Fig. 10: selected eigenmodes as arrows on the grains, panels (a),
+    (b), ...; shapes: list of (label, x, y, radius, ux, uy), each magnified
+    so that its largest arrow is ARROWS_LARGEST d long (the shapes are
+    mass-normalised: their scale is arbitrary); title: above the panels"""
     count = len(shapes)
     columns = 3 if count > 4 else 2
     rows = -(-count // columns)
-    fig, axes = plt.subplots(rows, columns, figsize=(3.4 * columns, 3.7 * rows), squeeze=False)
-    for ax, (label, x, y, radius, ux, uy) in zip(axes.ravel(), shapes):
-        _grain_dots(ax, x, y, radius, width, height)
-        _arrows(ax, x, y, ux, uy, 2.0 / np.max(np.hypot(ux, uy)))
-        ax.set_title(label, fontsize=8)
-    for ax in axes.ravel()[count:]:
-        ax.axis("off")
-    _save(fig, path, dpi=65, colours=16)
+    with plt.rc_context(PRINT_STYLE):
+        fig, axes = _packing_figure(PAGE, rows, columns, height / width, top=1.15 if title else 0.75, gaps=0.15,
+                                    hspace=0.75)
+        for k, (ax, (label, x, y, radius, ux, uy)) in enumerate(zip(axes.ravel(), shapes)):
+            _packing_panel(ax, x, y, radius, width, height, xlabel=k + columns >= count, ylabel=k % columns == 0)
+            _arrows(ax, x, y, ux, uy, ARROWS_LARGEST / np.max(np.hypot(ux, uy)))
+            ax.set_title(f"({chr(ord('a') + k)}) {label}")
+        for ax in axes.ravel()[count:]:
+            ax.axis("off")
+        if title:
+            fig.suptitle(title, y=1.0 - 0.1 / fig.get_figheight(), va="top")
+        _save(fig, path, dpi=PRINT_DPI, colours=16, tight=False)
 
 
 def fig11_damping(signals, path, title):

@@ -149,3 +149,33 @@ def test_figures_are_written(tmp_path):
                                more[3], "synthetic")
     for path in paths + more:
         assert path.stat().st_size > 1000, path
+
+
+def test_packing_figures_are_readable(tmp_path):
+    # Figs. 1, 3 and 10 on a small synthetic packing: written at the print
+    # widths (one column, the page) and PRINT_DPI, the type PRINT_TYPE points
+    from PIL import Image
+
+    from acoustic_tools import sound_figures
+
+    rng = np.random.default_rng(1)
+    width, height = 10.0, 8.0
+    x, y = [a.ravel() + 0.5 for a in np.meshgrid(np.arange(width), np.arange(height))]
+    radius = np.full(len(x), 0.5)
+    grains = {"x": x, "y": y, "radius": radius}
+    segments = np.array([(x[i], y[i], x[i] + 1.0, y[i], f, f ** (1 / 3)) for i, f in
+                         enumerate(rng.exponential(1e-4, len(x))) if x[i] + 1.0 < width])
+    ux, uy = rng.normal(0.0, 0.01, (2, len(x)))
+    paths = [tmp_path / name for name in ("f1.png", "f3.png", "f10.png")]
+    sound_figures.fig1_network(grains, segments, segments[:, 4], segments[:, 5], width, height, paths[0],
+                               "synthetic")
+    sound_figures.fig3_snapshot(x, y, radius, ux, uy, width, height, 76.7, paths[1], "synthetic")
+    shapes = [(f"n = {n}\nsynthetic\n$f$ = 0.01, PR = 0.5", x, y, radius, uy, ux) for n in range(5)]
+    sound_figures.fig10_modes(shapes, width, height, paths[2], "synthetic")
+    widths = {path: Image.open(path).size[0] for path in paths}
+    dpi = sound_figures.PRINT_DPI
+    assert widths[paths[0]] == pytest.approx(sound_figures.PAGE * dpi, abs=2)
+    assert widths[paths[1]] == pytest.approx(sound_figures.COLUMN * dpi, abs=2)
+    assert widths[paths[2]] == pytest.approx(sound_figures.PAGE * dpi, abs=2)
+    assert sound_figures.PRINT_TYPE >= 10 and all(v == sound_figures.PRINT_TYPE
+                                                  for v in sound_figures.PRINT_STYLE.values())

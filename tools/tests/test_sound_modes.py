@@ -90,6 +90,22 @@ def test_selected_modes_kinds():
     assert chosen == {"lowest": [2, 3], "strongest": [7, 11, 13], "localised": [18]}
 
 
+def test_labels_of_the_selected_modes():
+    # Fig. 10's labels: the two lowest non-zero modes by their rank (the
+    # second is not "lowest"), then the other kinds; an index not selected
+    # is an error
+    from acoustic_tools.sound_collect import mode_kind
+    selected = {"lowest": [147, 148], "strongest": [853, 886, 977], "localised": [1838]}
+    assert mode_kind(147, selected) == "lowest non-zero"
+    assert mode_kind(148, selected) == "second-lowest non-zero"
+    assert [mode_kind(i, selected) for i in (853, 886, 977)] == ["large $|a_n b_n|$"] * 3
+    assert mode_kind(1838, selected) == "localised, high $f$"
+    # the rank is by frequency (index), whatever the order of the list
+    assert mode_kind(148, {"lowest": [148, 147]}) == "second-lowest non-zero"
+    with pytest.raises(ValueError):
+        mode_kind(5, selected)
+
+
 def test_apparent_moduli_of_a_homogeneous_column():
     # a column of 41 grains, springs k between grains (length 1) and 2k to
     # the walls (length 1/2): a homogeneous medium of modulus k (per unit
