@@ -6,12 +6,14 @@
 #   ./run.sh build    only install and build
 #
 # On a fresh Debian 12 machine run it as root: it installs the Debian packages
-# it needs and fetches the source of LAMMPS 4 Feb 2025 (Debian 13's lammps
-# package) through apt, from a deb-src entry for trixie it adds in a file of
-# its own, derived from the machine's Debian entry.
+# it needs and fetches through apt the source of LAMMPS 4 Feb 2025 (Debian
+# 13's lammps package) and of LIGGGHTS 3.8.0 (Debian 12's liggghts package),
+# from deb-src entries for trixie and for the machine's own suite that it adds
+# in files of their own, derived from the machine's Debian entry.
 # Environment:
-#   ACOUSTIC_CACHE       where the LAMMPS source is kept (default /var/cache/acoustic)
+#   ACOUSTIC_CACHE       where the sources are kept (default /var/cache/acoustic)
 #   LAMMPS_SOURCE_DIR    use this LAMMPS source tree (4 Feb 2025 or later) instead
+#   LIGGGHTS_SOURCE_DIR  use this LIGGGHTS-PUBLIC 3.8 source tree instead
 #   ACOUSTIC_BUILD_DIR   build directory (default ./build, ignored by git)
 #   ACOUSTIC_JOBS        parallel build jobs (default: number of cores)
 set -euo pipefail
@@ -86,7 +88,7 @@ debian_archive_entry() {
   codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
   [ -n "$codename" ] || die "cannot tell the Debian release from /etc/os-release"
   for f in /etc/apt/sources.list.d/*.sources; do
-    [ -f "$f" ] && [ "$f" != "$lammps_sources_file" ] || continue
+    [ -f "$f" ] && [ "$f" != "$lammps_sources_file" ] && [ "$f" != "$liggghts_sources_file" ] || continue
     awk -v suite="$codename" '
       /^[[:space:]]*$/ { if (uri != "" && hit) { print uri, key; exit } uri = ""; key = ""; hit = 0; next }
       /^URIs:/ { uri = $2 }
@@ -101,53 +103,69 @@ debian_archive_entry() {
   die "found no Debian archive entry for suite $codename in the apt sources"
 }
 
-# a deb-src entry for trixie in a file of its own, next to the machine's entries
-add_trixie_sources() {
-  [ -f "$lammps_sources_file" ] && return
-  local uri key
+# a deb-src entry for `suite` in the file `file` of its own, next to the
+# machine's entries (what: the comment naming the source it is for)
+add_source_entry() {
+  local suite=$1 file=$2 what=$3 uri key
+  [ -f "$file" ] && return
   read -r uri key < <(debian_archive_entry)
-  say "adding a deb-src entry for trixie ($uri) in $lammps_sources_file"
+  say "adding a deb-src entry for $suite ($uri) in $file"
   {
-    echo "# added by ACOUSTIC's run.sh: the source of LAMMPS 4 Feb 2025 (Debian 13)"
+    echo "# added by ACOUSTIC's run.sh: $what"
     echo "Types: deb-src"
     echo "URIs: $uri"
-    echo "Suites: trixie"
+    echo "Suites: $suite"
     echo "Components: main"
     if [ -n "$key" ]; then echo "Signed-By: $key"; fi
-  } | as_root tee "$lammps_sources_file" >/dev/null
+  } | as_root tee "$file" >/dev/null
   apt_updated=0
 }
 
-# fetch lammps_$lammps_upstream.orig.tar.xz through apt, check it against the
-# SHA256 of apt's Sources index, unpack it into the cache
-fetch_lammps_source() {
-  add_trixie_sources
-  apt_update
-  local version tarball sha
-  version=$(apt-cache showsrc lammps | awk -v up="$lammps_upstream" \
-    '/^Version:/ && index($2, up "-") == 1 { print $2; exit }')
-  [ -n "$version" ] || die "apt knows no lammps source package $lammps_upstream-*; check $lammps_sources_file"
-  tarball=lammps_$lammps_upstream.orig.tar.xz
+# the Debian version of source package `pkg` whose upstream part is `up`
+# (the first apt lists), and the SHA256 apt's Sources index gives `tarball`
+source_version() {
+  apt-cache showsrc "$1" | awk -v up="$2" '/^Version:/ && index($2, up "-") == 1 { print $2; exit }'
+}
+source_sha256() {
+  apt-cache showsrc "$1" | awk -v v="$2" -v f="$3" '
+    /^Version:/ { cur = $2 } /^Checksums-Sha256:/ { on = 1; next } /^[A-Za-z-]+:/ { on = 0 }
+    on && cur == v && $3 == f { print $1; exit }'
+}
+
+# fetch the orig tarball of pkg=version through apt into the cache (once),
+# check it against the SHA256 of apt's Sources index, unpack its top
+# directory `dirname` into the cache
+fetch_orig_tarball() {
+  local pkg=$1 version=$2 tarball=$3 dirname=$4 sha
   as_root mkdir -p "$cache"
   if [ ! -f "$cache/$tarball" ]; then
-    say "fetching Debian's lammps $version source into $cache"
-    # the .dsc of this version may be missing from the archive: apt then
-    # fails after the tarballs arrived, which the checksum below settles
-    (cd "$cache" && as_root apt-get source --download-only -qq "lammps=$version" >/dev/null 2>&1) || true
+    say "fetching Debian's $pkg $version source into $cache"
+    # the .dsc or the Debian part of this version may be missing from the
+    # archive: apt then fails after the tarball arrived, which the checksum
+    # below settles
+    (cd "$cache" && as_root apt-get source --download-only -qq "$pkg=$version" >/dev/null 2>&1) || true
   fi
-  [ -f "$cache/$tarball" ] || die "apt-get source lammps=$version did not deliver $tarball"
-  sha=$(apt-cache showsrc lammps | awk -v v="$version" -v f="$tarball" '
-    /^Version:/ { cur = $2 } /^Checksums-Sha256:/ { on = 1; next } /^[A-Za-z-]+:/ { on = 0 }
-    on && cur == v && $3 == f { print $1; exit }')
+  [ -f "$cache/$tarball" ] || die "apt-get source $pkg=$version did not deliver $tarball"
+  sha=$(source_sha256 "$pkg" "$version" "$tarball")
   [ -n "$sha" ] || die "apt's Sources index lists no SHA256 for $tarball"
   echo "$sha  $cache/$tarball" | sha256sum -c --quiet - \
     || die "$cache/$tarball does not match the SHA256 of apt's Sources index; delete it and rerun"
   say "unpacking $tarball (SHA256 checked)"
-  as_root rm -rf "$cache/$lammps_dirname.tmp"
-  as_root mkdir -p "$cache/$lammps_dirname.tmp"
-  as_root tar -xJf "$cache/$tarball" --no-same-owner -C "$cache/$lammps_dirname.tmp"
-  as_root mv "$cache/$lammps_dirname.tmp/$lammps_dirname" "$cache/$lammps_dirname"
-  as_root rm -rf "$cache/$lammps_dirname.tmp"
+  as_root rm -rf "$cache/$dirname.tmp"
+  as_root mkdir -p "$cache/$dirname.tmp"
+  as_root tar -xJf "$cache/$tarball" --no-same-owner -C "$cache/$dirname.tmp"
+  as_root mv "$cache/$dirname.tmp/$dirname" "$cache/$dirname"
+  as_root rm -rf "$cache/$dirname.tmp"
+}
+
+# LAMMPS's source: lammps_$lammps_upstream.orig.tar.xz, from trixie
+fetch_lammps_source() {
+  add_source_entry trixie "$lammps_sources_file" "the source of LAMMPS 4 Feb 2025 (Debian 13)"
+  apt_update
+  local version
+  version=$(source_version lammps "$lammps_upstream")
+  [ -n "$version" ] || die "apt knows no lammps source package $lammps_upstream-*; check $lammps_sources_file"
+  fetch_orig_tarball lammps "$version" "lammps_$lammps_upstream.orig.tar.xz" "$lammps_dirname"
 }
 
 lammps_source() {
@@ -162,18 +180,53 @@ lammps_source() {
   LAMMPS_SOURCE_DIR=$cache/$lammps_dirname
 }
 
+# LIGGGHTS 3.8.0: the upstream source of Debian 12 (bookworm)'s liggghts
+# package, from a deb-src entry for the machine's own suite (added only if
+# apt does not know the source package yet)
+liggghts_upstream=3.8.0+repack1
+liggghts_dirname=LIGGGHTS-PUBLIC-3.8.0
+liggghts_sources_file=/etc/apt/sources.list.d/acoustic-liggghts-source.sources
+
+fetch_liggghts_source() {
+  local version codename
+  version=$(source_version liggghts "$liggghts_upstream")
+  if [ -z "$version" ]; then
+    codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
+    add_source_entry "$codename" "$liggghts_sources_file" "the source of LIGGGHTS 3.8.0 (Debian 12)"
+    apt_update
+    version=$(source_version liggghts "$liggghts_upstream")
+  fi
+  [ -n "$version" ] || die "apt knows no liggghts source package $liggghts_upstream-*; check $liggghts_sources_file"
+  fetch_orig_tarball liggghts "$version" "liggghts_$liggghts_upstream.orig.tar.xz" "$liggghts_dirname"
+}
+
+liggghts_source() {
+  if [ -n "${LIGGGHTS_SOURCE_DIR:-}" ]; then
+    [ -f "$LIGGGHTS_SOURCE_DIR/src/Make.sh" ] \
+      || die "LIGGGHTS_SOURCE_DIR=$LIGGGHTS_SOURCE_DIR has no src/Make.sh"
+    return
+  fi
+  if [ ! -f "$cache/$liggghts_dirname/src/Make.sh" ]; then
+    fetch_liggghts_source
+  fi
+  LIGGGHTS_SOURCE_DIR=$cache/$liggghts_dirname
+}
+
 configure_and_build() {
   install_packages
   install_tools
   lammps_source
+  liggghts_source
   say "LAMMPS source: $LAMMPS_SOURCE_DIR"
+  say "LIGGGHTS source: $LIGGGHTS_SOURCE_DIR"
   mkdir -p "$build"
-  cmake -S "$top" -B "$build" -DLAMMPS_SOURCE_DIR="$LAMMPS_SOURCE_DIR" >"$build/configure.log" 2>&1 \
+  cmake -S "$top" -B "$build" -DLAMMPS_SOURCE_DIR="$LAMMPS_SOURCE_DIR" \
+    -DLIGGGHTS_SOURCE_DIR="$LIGGGHTS_SOURCE_DIR" >"$build/configure.log" 2>&1 \
     || { cat "$build/configure.log"; die "configure failed"; }
   say "building in $build (log: $build/build.log)"
   cmake --build "$build" -j "$jobs" >"$build/build.log" 2>&1 \
     || { tail -n 60 "$build/build.log"; die "build failed (full log: $build/build.log)"; }
-  say "built: $build/lammps/lmp and $build/lammps/liblammps.so"
+  say "built: $build/lammps/lmp and $build/lammps/liblammps.so, $build/liggghts-tree/src/lmp_acoustic"
 }
 
 # Open MPI refuses root without these; tests run 2 ranks on 2 cores
@@ -192,5 +245,5 @@ case "$cmd" in
     configure_and_build
     exec "$top/examples/avalanche/run.sh" "$build" ;;
   *)
-    sed -n '2,15p' "$0"; exit 2 ;;
+    sed -n '2,17p' "$0"; exit 2 ;;
 esac

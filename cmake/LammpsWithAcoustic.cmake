@@ -4,7 +4,7 @@
 # cmake/ directory and of the files that cmake/patches/*.patch change, and
 # links src/ACOUSTIC and lib/acoustic to this repository's package and library.
 include(ExternalProject)
-include(${CMAKE_CURRENT_LIST_DIR}/AcousticPatchLammps.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/AcousticOverlayTree.cmake)
 
 if(NOT EXISTS ${LAMMPS_SOURCE_DIR}/cmake/CMakeLists.txt OR NOT EXISTS ${LAMMPS_SOURCE_DIR}/src/GRANULAR/gran_sub_mod.h)
   message(FATAL_ERROR "LAMMPS_SOURCE_DIR='${LAMMPS_SOURCE_DIR}' is not a LAMMPS source tree of "
@@ -14,12 +14,6 @@ endif()
 
 set(ACOUSTIC_LAMMPS_TREE ${CMAKE_BINARY_DIR}/lammps-tree)
 set(ACOUSTIC_LAMMPS_BUILD ${CMAKE_BINARY_DIR}/lammps)
-
-function(_acoustic_link target link)
-  if(NOT EXISTS ${link} AND NOT IS_SYMLINK ${link})
-    file(CREATE_LINK ${target} ${link} SYMBOLIC)
-  endif()
-endfunction()
 
 # lib was a link to LAMMPS's lib/ in build trees made before lib/acoustic existed
 if(IS_SYMLINK ${ACOUSTIC_LAMMPS_TREE}/lib)
@@ -48,7 +42,7 @@ configure_file(${PROJECT_SOURCE_DIR}/cmake/Modules/Packages/ACOUSTIC.cmake
 acoustic_patch_lammps_cmake(${ACOUSTIC_LAMMPS_TREE}/cmake)
 file(GLOB _patches ${PROJECT_SOURCE_DIR}/cmake/patches/*.patch)
 foreach(_patch ${_patches})
-  acoustic_apply_lammps_patch(${_patch} ${ACOUSTIC_LAMMPS_TREE} ${LAMMPS_SOURCE_DIR})
+  acoustic_apply_patch(${_patch} ${ACOUSTIC_LAMMPS_TREE} ${LAMMPS_SOURCE_DIR})
 endforeach()
 
 # a new or removed file in src/ACOUSTIC changes the style headers, one in

@@ -1,3 +1,14 @@
+# Functions of the overlay trees in which ACOUSTIC builds LAMMPS and LIGGGHTS
+# (cmake/LammpsWithAcoustic.cmake, cmake/LiggghtsWithAcoustic.cmake) and of
+# cmake/install-into-lammps.cmake.
+
+# a symbolic link `link` to `target`, unless `link` exists
+function(_acoustic_link target link)
+  if(NOT EXISTS ${link} AND NOT IS_SYMLINK ${link})
+    file(CREATE_LINK ${target} ${link} SYMBOLIC)
+  endif()
+endfunction()
+
 # Teach a LAMMPS CMake tree (4 Feb 2025 and 4 Jul 2026 layouts) about the
 # ACOUSTIC package: add it to STANDARD_PACKAGES and to the list of packages
 # whose cmake/Modules/Packages/<PKG>.cmake is included.  Idempotent.
@@ -25,12 +36,12 @@ function(acoustic_patch_lammps_cmake cmake_dir)
   file(WRITE ${_file} "${_text}")
 endfunction()
 
-# Apply a patch of LAMMPS itself (cmake/patches/*.patch, paths a/src/...,
-# patch -p1) to the LAMMPS tree `tree`.  When `original` names another tree,
+# Apply a patch of LAMMPS or LIGGGHTS itself (cmake/patches/*.patch,
+# liggghts/patches/*.patch; paths a/src/..., patch -p1) to the tree `tree`.  When `original` names another tree,
 # `tree` is an overlay of links to it: the files the patch changes are first
 # replaced by copies of their originals.  A stamp in `tree` records the patch,
 # so that a second call does nothing and a changed patch is applied afresh.
-function(acoustic_apply_lammps_patch patch tree original)
+function(acoustic_apply_patch patch tree original)
   get_filename_component(_name ${patch} NAME)
   file(MD5 ${patch} _md5)
   set(_stamp ${tree}/.acoustic-${_name}.md5)
@@ -56,7 +67,7 @@ function(acoustic_apply_lammps_patch patch tree original)
                   WORKING_DIRECTORY ${tree} RESULT_VARIABLE _rc OUTPUT_VARIABLE _out
                   ERROR_VARIABLE _out)
   if(NOT _rc EQUAL 0)
-    message(FATAL_ERROR "ACOUSTIC: ${patch} does not apply to the LAMMPS tree ${tree}:\n${_out}")
+    message(FATAL_ERROR "ACOUSTIC: ${patch} does not apply to the tree ${tree}:\n${_out}")
   endif()
   file(WRITE ${_stamp} ${_md5})
   message(STATUS "ACOUSTIC: applied ${_name} to ${tree}")
