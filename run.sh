@@ -29,7 +29,7 @@ debian_packages=(
   libeigen3-dev libsuitesparse-dev libmumps-dev libspectra-dev liblapack-dev libblas-dev libopenblas0-serial
   libpetsc-complex-dev libmetis-dev
   libgtest-dev patch
-  python3-numpy python3-scipy python3-matplotlib python3-pytest python3-pip python3-setuptools
+  python3-numpy python3-scipy python3-matplotlib python3-pytest python3-pytest-xdist python3-pip python3-setuptools
 )
 
 say() { printf '[acoustic] %s\n' "$*"; }
