@@ -486,19 +486,10 @@ PRODUCTION = ("thickness", "tcon_cal", "sensitivity", "paper_length", "table1",
 
 
 def record(out, dest):
-    """Copy job.json and result.json of every finished job in out into
-    dest/<job>/ (a job present in both is written again from out; one
-    recorded earlier and absent from out is kept); returns the number of
-    jobs written."""
-    written = 0
-    for directory, _, _ in study.finished_jobs(out):
-        target = os.path.join(dest, os.path.basename(directory))
-        os.makedirs(target, exist_ok=True)
-        for name in (study.JOB, study.RESULT, "quiet.json"):
-            if os.path.exists(os.path.join(directory, name)):
-                shutil.copyfile(os.path.join(directory, name), os.path.join(target, name))
-        written += 1
-    return written
+    """Copy job.json, result.json (and quiet.json) of every finished job in
+    out into dest/<job>/ (study.record_jobs); returns the number of jobs
+    written."""
+    return study.record_jobs(out, dest, files=(study.JOB, study.RESULT, "quiet.json"))
 
 
 # ---------------------------------------------------------------- command line

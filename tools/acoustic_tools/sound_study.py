@@ -225,6 +225,33 @@ def collect(args):
     sound_collect.collect(args.out)
 
 
+SUMMARY_PREFIXES = ("packing:", "checks:", "pulse:", "moduli:")
+
+
+def log_summary(directory):
+    """the lines of a sample's log.lammps that in.sound prints as its summary
+    (packing, checks, pulse, moduli), for record/<sample>/log_summary.txt"""
+    path = os.path.join(directory, "log.lammps")
+    if not os.path.exists(path):
+        return ""
+    with open(path, errors="replace") as f:
+        return "".join(line for line in f if line.startswith(SUMMARY_PREFIXES))
+
+
+def is_sample(name):
+    """a packing sample's directory (p<p>_H<H>_s<seed>...), not a chain or lattice"""
+    return re.match(r"p[0-9.e+-]+_H[0-9]+_s[0-9]+", name) is not None
+
+
+def record(args):
+    """study.py record: the finished samples of OUT into RECORD (job.json,
+    result.json, log_summary.txt), then the tables of RECORD into
+    RECORD/tables.md"""
+    written = study.record_jobs(args.out, args.record, summarise=log_summary, select=is_sample)
+    print(f"record: {written} samples from {args.out} written to {args.record}")
+    sound_collect.collect(args.record)
+
+
 def figures(args):
     """study.py figures"""
     sound_collect.draw(args.out, args.figures)
@@ -416,6 +443,11 @@ def main(here, argv=None):
                             help="fractions of the critical damping of Fig. 11 (0.01 0.03 0.1 0.3)")
         parser.set_defaults(here=here)
 
+    def record_arguments(parser):
+        common(parser)
+        parser.add_argument("--record", default=os.path.join(here, "record"),
+                            help="the record of the study in git (default: examples/sound/record)")
+
     def migrate_arguments(parser):
         common(parser)
         parser.add_argument("--remove-old", action="store_true",
@@ -424,6 +456,8 @@ def main(here, argv=None):
     return study.main("Paper 003's sound study: run the samples, collect the tables, draw the figures.", {
         "run": (run, "run the samples not yet finished (resumable)", run_arguments),
         "collect": (collect, "results.json and tables.md into OUT, the tables on stdout", common),
+        "record": (record, "the finished samples of OUT into the record (job.json, result.json, "
+                   "log_summary.txt) and its tables.md", record_arguments),
         "figures": (figures, "the PNG figures", lambda parser: common(parser, figures_too=True)),
         "figures-run": (figures_run, "in.figures on one finished sample: Figs. 3, 10, 11 (about a minute)",
                         figures_run_arguments),

@@ -19,6 +19,7 @@ import concurrent.futures
 import json
 import math
 import os
+import shutil
 
 JOB = "job.json"
 RESULT = "result.json"
@@ -97,6 +98,29 @@ def finished_jobs(out):
         if result is not None:
             found.append((directory, read_job(directory), result))
     return found
+
+
+def record_jobs(out, dest, files=(JOB, RESULT), summarise=None, select=None):
+    """Copy `files` of every finished job under out (that select(name)
+    accepts, if given) into dest/<job>/, and, with summarise, write what
+    summarise(directory) returns as dest/<job>/log_summary.txt.  A job present
+    in both is written again from out; one recorded earlier and absent from
+    out is kept.  Returns the number of jobs written."""
+    written = 0
+    for directory, _, _ in finished_jobs(out):
+        name = os.path.basename(directory)
+        if select is not None and not select(name):
+            continue
+        target = os.path.join(dest, name)
+        os.makedirs(target, exist_ok=True)
+        for file in files:
+            if os.path.exists(os.path.join(directory, file)):
+                shutil.copyfile(os.path.join(directory, file), os.path.join(target, file))
+        if summarise is not None:
+            with open(os.path.join(target, "log_summary.txt"), "w") as f:
+                f.write(summarise(directory))
+        written += 1
+    return written
 
 
 def lammps_variables(settings, names):

@@ -1,0 +1,45 @@
+"""study.record_jobs and the sound study's record: what a study's record
+keeps of its finished jobs"""
+import json
+import os
+
+from acoustic_tools import sound_study, study
+
+
+def make_job(out, name, finished=True, log=None):
+    directory = out / name
+    directory.mkdir(parents=True)
+    study.write_job(str(directory), {"name": name})
+    if finished:
+        study.write_result(str(directory), {"value": 1.5})
+    if log is not None:
+        (directory / "log.lammps").write_text(log)
+    return directory
+
+
+def test_record_copies_finished_jobs_only(tmp_path):
+    out, dest = tmp_path / "out", tmp_path / "record"
+    make_job(out, "a")
+    make_job(out, "b", finished=False)
+    (dest / "old").mkdir(parents=True)          # recorded earlier, absent from out: kept
+    assert study.record_jobs(str(out), str(dest)) == 1
+    assert sorted(os.listdir(dest)) == ["a", "old"]
+    assert json.loads((dest / "a" / study.RESULT).read_text())["value"] == 1.5
+    assert (dest / "a" / study.JOB).exists()
+    assert not (dest / "a" / "log_summary.txt").exists()
+
+
+def test_sound_record_keeps_the_samples_and_their_summary(tmp_path):
+    out, dest = tmp_path / "out", tmp_path / "record"
+    log = ("LAMMPS (4 Feb 2025)\npacking: 618 grains\nthermo line 1 2 3\n"
+           "checks: phi2 0.82\npulse: t_tof 12\nmoduli: C11 0.005\n  packing: indented\n")
+    make_job(out, "p1e-4_H25_s3", log=log)
+    make_job(out, "p1e-4_H25_s3_m10_v0", log=log)
+    make_job(out, "chain", log=log)
+    make_job(out, "lattice_p1e-4_M24", log=log)
+    written = study.record_jobs(str(out), str(dest), summarise=sound_study.log_summary,
+                                select=sound_study.is_sample)
+    assert written == 2
+    assert sorted(os.listdir(dest)) == ["p1e-4_H25_s3", "p1e-4_H25_s3_m10_v0"]
+    summary = (dest / "p1e-4_H25_s3" / "log_summary.txt").read_text().splitlines()
+    assert summary == ["packing: 618 grains", "checks: phi2 0.82", "pulse: t_tof 12", "moduli: C11 0.005"]
