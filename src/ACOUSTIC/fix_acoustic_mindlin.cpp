@@ -28,6 +28,7 @@
 #include "citations_acoustic.h"
 #include "citeme.h"
 
+#include "acoustic_contact_factor.h"
 #include "acoustic_contact_network.h"
 #include "acoustic_solver_error.h"
 #include "collective_error.h"
@@ -820,7 +821,20 @@ void FixAcousticMindlin::evaluate_contacts(bool set_factors)
   ncontact_rows = 0;
   const int dim = domain->dimension;
   CollectiveError errors(lmp);
-  Eigen::VectorXcd qi(ndof), qj(ndof);
+  // U_t and s of a contact as the LIGGGHTS styles compute them (acoustic_contact_factor.h)
+  Acoustic::ContactFactorInput in;
+  in.dimension = dim;
+  in.model = (settings.model == Acoustic::ContactModel::Full)
+      ? Acoustic::FacadeContactModel::Full
+      : Acoustic::FacadeContactModel::Normal;
+  in.amplitude = amplitude;
+  in.compute_factor = set_factors;
+  in.cmu = law.cmu;
+  in.mu_min = law.mu_min;
+  Acoustic::ContactFactorResult out;
+  // the prescribed motion of a wall: the drive (source wall), or none
+  double q_source_wall[12] = {0.0}, q_still_wall[12] = {0.0};
+  for (int k = 0; k < dim; k++) q_source_wall[2 * k] = direction[k];
   for (const auto &c : contacts) {
     double s = 1.0, ut = 0.0;
     if (frequency > 0.0) {
@@ -830,24 +844,21 @@ void FixAcousticMindlin::evaluate_contacts(bool set_factors)
       const bool flip = (c.wall < 0) && tag[c.i] > tag[c.j];
       const int a = flip ? c.j : c.i, b = flip ? c.i : c.j;
       const double sign = flip ? -1.0 : 1.0;
-      for (int k = 0; k < ndof; k++) {
-        qi[k] = std::complex<double>(q_atom[a][2 * k], q_atom[a][2 * k + 1]);
-        if (c.wall >= 0)
-          qj[k] = (c.wall == source_wall && k < dim) ? direction[k] : 0.0;
-        else
-          qj[k] = std::complex<double>(q_atom[b][2 * k], q_atom[b][2 * k + 1]);
-      }
-      const Eigen::Vector3d n(sign * c.n[0], sign * c.n[1], sign * c.n[2]);
-      try {
-        const Eigen::Vector3cd delta = Acoustic::contact_point_displacement(
-            dim, settings.model, n, flip ? c.radj : c.radi, flip ? c.radi : c.radj, qi, qj);
-        ut = Acoustic::tangential_amplitude(delta, n, amplitude);
-        if (set_factors) s = Acoustic::friction_factor(law, c.kt, ut, c.mu, c.fncrit);
-      } catch (Acoustic::SolverError &e) {
-        errors.report(
-            fmt::format("{}: contact of atoms {} and {}: {}", CMD, tag[c.i], tag[c.j], e.what()));
+      in.q_i = q_atom[a];
+      in.q_j = (c.wall < 0) ? q_atom[b] : (c.wall == source_wall ? q_source_wall : q_still_wall);
+      for (int k = 0; k < 3; k++) in.normal[k] = sign * c.n[k];
+      in.radius_i = flip ? c.radj : c.radi;
+      in.radius_j = flip ? c.radi : c.radj;
+      in.tangential_stiffness = c.kt;
+      in.friction_coefficient = c.mu;
+      in.normal_force = c.fncrit;
+      if (!Acoustic::contact_mindlin_factor(in, out)) {
+        errors.report(fmt::format("{}: contact of atoms {} and {}: {}", CMD, tag[c.i], tag[c.j],
+                                  out.message));
         continue;    // the factor stays as it was
       }
+      ut = out.tangential_amplitude;
+      if (set_factors) s = out.factor;
     }
     // a wall contact whose tangential model has no /acoustic variant keeps its friction
     if (!c.factor)
