@@ -56,8 +56,10 @@ endforeach()
 configure_file(${PROJECT_SOURCE_DIR}/liggghts/style_contact_model.whitelist
                ${_src}/style_contact_model.whitelist COPYONLY)
 
-set(ACOUSTIC_LIGGGHTS_INC "")
-set(ACOUSTIC_LIGGGHTS_LIB "")
+# the styles include the C++98 facade of lib/acoustic and link its shared
+# library (cmake/AcousticLiggghtsLibrary.cmake), found again at run time
+set(ACOUSTIC_LIGGGHTS_INC "-I${PROJECT_SOURCE_DIR}/lib/acoustic")
+set(ACOUSTIC_LIGGGHTS_LIB "-L${CMAKE_BINARY_DIR} -lacoustic_liggghts -Wl,-rpath,${CMAKE_BINARY_DIR}")
 configure_file(${PROJECT_SOURCE_DIR}/liggghts/MAKE/Makefile.acoustic.in ${_src}/MAKE/Makefile.acoustic @ONLY)
 
 set(ACOUSTIC_LIGGGHTS ${_src}/lmp_acoustic)
@@ -65,3 +67,4 @@ set(ACOUSTIC_LIGGGHTS ${_src}/lmp_acoustic)
 add_custom_target(liggghts ALL
   COMMAND $(MAKE) -C ${_src} acoustic
   COMMENT "Building LIGGGHTS with the ACOUSTIC styles (${ACOUSTIC_LIGGGHTS})")
+add_dependencies(liggghts acoustic_liggghts)
