@@ -56,6 +56,8 @@ namespace ContactModels
         history_model(lmp, hsetup, c),
         factor_offset(hsetup->add_history_value(AcousticFrictionFactor::history_name(), "0"))
     {
+        // fix acoustic/mindlin finds the value by its name (get_history_offset)
+        if (c) c->add_history_offset(AcousticFrictionFactor::history_name(), factor_offset);
     }
 
     inline void registerSettings(Settings& settings)

@@ -1,0 +1,86 @@
+/* ----------------------------------------------------------------------
+    ACOUSTIC for LIGGGHTS-PUBLIC 3.8: fix acoustic/mindlin.
+
+    LIGGGHTS is open-source, distributed under the terms of the GNU Public
+    License, version 2 or later.  This file is part of the ACOUSTIC
+    package and distributed under the same terms.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   fix ID group acoustic/mindlin N frequency f amplitude U0 source src ...
+
+   The LAMMPS fix of the same name (doc/fix_acoustic_mindlin.rst) for pair
+   style gran with tangential history/acoustic, first version: grain
+   sources (a group), grain-grain contacts of the fix group, stiffness
+   hertz E nu, solved on rank 0 by the C++98 facade of the ACOUSTIC
+   numerics (acoustic_gathered_drive.h), each contact's factor by
+   contact_mindlin_factor (acoustic_contact_factor.h), evaluated from the
+   lower to the higher atom ID so that both copies of a contact across
+   processors get the same bits.  No walls, no meshes, no restart yet.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+
+FixStyle(acoustic/mindlin,FixAcousticMindlin)
+
+#else
+
+#ifndef LMP_FIX_ACOUSTIC_MINDLIN_H
+#define LMP_FIX_ACOUSTIC_MINDLIN_H
+
+#include "fix.h"
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixAcousticMindlin : public Fix {
+ public:
+  FixAcousticMindlin(class LAMMPS *, int, char **);
+  ~FixAcousticMindlin();
+  int setmask();
+  void init();
+  void setup_pre_force(int);
+  void pre_force(int);
+  double compute_vector(int);
+  double memory_usage();
+
+ private:
+  // one contact of this processor's neighbor list between atoms of the group
+  struct LocalContact {
+    int i, j;             // local atom indices (j may be a ghost)
+    double n[3];          // unit normal from j to i
+    double fn, kn, kt, mu;
+    double *slot;         // the history value 1 - s
+    bool counted;         // this processor's copy counts (owned row)
+  };
+
+  int source_group, source_groupbit;
+  double frequency, amplitude;
+  double direction[3];
+  bool direction_given;
+  int direction_axis;
+  bool mode_normal;
+  double youngs_modulus, poisson_ratio, kappa_scale, ratio;
+  double cmu, mu_min;
+  bool model_full;
+
+  class PairGran *pair;
+  int factor_offset;
+  double stats[3];      // contacts, mean factor, min factor
+
+  std::vector<LocalContact> contacts;
+  double **rows;        // local output: tag i, tag j, F_n, k_n, U_t, s
+  int maxrows;
+
+  void error_all(const char *fmt, ...);
+  void parse(int narg, char **arg);
+  void normalise_direction();
+  void collect();
+  void update_factors();
+  void statistics();
+};
+
+}
+
+#endif
+#endif
