@@ -225,12 +225,13 @@ def collect(args):
     sound_collect.collect(args.out)
 
 
-SUMMARY_PREFIXES = ("packing:", "checks:", "pulse:", "moduli:")
+SUMMARY_PREFIXES = ("packing", "checks", "pulse", "moduli")
 
 
 def log_summary(directory):
     """the lines of a sample's log.lammps that in.sound prints as its summary
-    (packing, checks, pulse, moduli), for record/<sample>/log_summary.txt"""
+    (the lines that begin with packing, checks, pulse or moduli), for
+    record/<sample>/log_summary.txt"""
     path = os.path.join(directory, "log.lammps")
     if not os.path.exists(path):
         return ""
@@ -245,11 +246,13 @@ def is_sample(name):
 
 def record(args):
     """study.py record: the finished samples of OUT into RECORD (job.json,
-    result.json, log_summary.txt), then the tables of RECORD into
+    result.json, log_summary.txt), then the tables of OUT (collect: they
+    need the samples' signals, which the record does not keep) into
     RECORD/tables.md"""
     written = study.record_jobs(args.out, args.record, summarise=log_summary, select=is_sample)
     print(f"record: {written} samples from {args.out} written to {args.record}")
-    sound_collect.collect(args.record)
+    sound_collect.collect(args.out)
+    shutil.copyfile(os.path.join(args.out, "tables.md"), os.path.join(args.record, "tables.md"))
 
 
 def figures(args):

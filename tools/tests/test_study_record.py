@@ -32,7 +32,7 @@ def test_record_copies_finished_jobs_only(tmp_path):
 def test_sound_record_keeps_the_samples_and_their_summary(tmp_path):
     out, dest = tmp_path / "out", tmp_path / "record"
     log = ("LAMMPS (4 Feb 2025)\npacking: 618 grains\nthermo line 1 2 3\n"
-           "checks: phi2 0.82\npulse: t_tof 12\nmoduli: C11 0.005\n  packing: indented\n")
+           "checks: phi2 0.82\npacking_steps 575000\npulse: t_tof 12\nmoduli: C11 0.005\n  packing: indented\n")
     make_job(out, "p1e-4_H25_s3", log=log)
     make_job(out, "p1e-4_H25_s3_m10_v0", log=log)
     make_job(out, "chain", log=log)
@@ -42,4 +42,5 @@ def test_sound_record_keeps_the_samples_and_their_summary(tmp_path):
     assert written == 2
     assert sorted(os.listdir(dest)) == ["p1e-4_H25_s3", "p1e-4_H25_s3_m10_v0"]
     summary = (dest / "p1e-4_H25_s3" / "log_summary.txt").read_text().splitlines()
-    assert summary == ["packing: 618 grains", "checks: phi2 0.82", "pulse: t_tof 12", "moduli: C11 0.005"]
+    assert summary == ["packing: 618 grains", "checks: phi2 0.82", "packing_steps 575000", "pulse: t_tof 12",
+                       "moduli: C11 0.005"]
