@@ -1,6 +1,6 @@
 # The shared library acoustic_liggghts: the C++98 facade of the ACOUSTIC
 # numerics (lib/acoustic/acoustic_facade.h, acoustic_gathered_drive.h,
-# acoustic_contact_factor.h), which the LIGGGHTS styles include and link
+# acoustic_gathered_modes.h, acoustic_gathered_pulse.h, acoustic_contact_factor.h), which the LIGGGHTS styles include and link
 # (-lacoustic_liggghts), built on the static acoustic_numerics (position
 # independent code).  It exports the facade's functions only: the numerics,
 # Eigen's instances and the rest are hidden (-fvisibility=hidden, and

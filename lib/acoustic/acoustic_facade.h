@@ -14,10 +14,12 @@
 /* ----------------------------------------------------------------------
    ACOUSTIC package numerics: the engine-neutral interface (facade) that
    C++98 callers use, the LIGGGHTS styles of ACOUSTIC among them: what its
-   two headers share.
+   headers share.
 
      acoustic_gathered_drive.h   the steady response of a whole network,
                                  gathered on one process, to a harmonic drive
+     acoustic_gathered_modes.h   the vibration modes of such a network
+     acoustic_gathered_pulse.h   its response to a delta pulse of a source
      acoustic_contact_factor.h   the tangential amplitude and the Mindlin
                                  friction factor of one contact
 

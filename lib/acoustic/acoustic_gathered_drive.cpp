@@ -19,6 +19,7 @@
 #include "acoustic_gathered_drive.h"
 
 #include "acoustic_contact_network.h"
+#include "acoustic_gathered_network.h"
 #include "acoustic_helmholtz_solver.h"
 #include "acoustic_mumps_ldlt.h"
 #include "acoustic_solver_error.h"
@@ -37,14 +38,9 @@ namespace Acoustic {
 
 namespace {
 
-  const char WHERE[] = "gathered drive: ";
+  using Gathered::number;
 
-  std::string number(double value)
-  {
-    char text[32];
-    std::snprintf(text, sizeof(text), "%g", value);
-    return text;
-  }
+  const char WHERE[] = "gathered drive: ";
 
   // the status, its message and no result; never throws (an unallocatable
   // message is left empty)
@@ -105,69 +101,6 @@ namespace {
       settings.ordering = mumps_ordering_from_name(input.ordering);
     }
     return settings;
-  }
-
-  // the grains of the network: a wall (infinite mass) gets the placeholders
-  // of the fix's wall nodes
-  std::vector<Grain> network_grains(const GatheredDriveInput &input, std::vector<bool> &wall)
-  {
-    std::vector<Grain> grains(input.grains.size());
-    wall.assign(input.grains.size(), false);
-    for (std::size_t g = 0; g < input.grains.size(); ++g) {
-      const double mass = input.grains[g].mass;
-      if (mass == HUGE_VAL) {
-        wall[g] = true;
-        grains[g].mass = 1.0;
-        grains[g].radius = 1.0;
-        continue;
-      }
-      if (!(std::isfinite(mass) && mass > 0.0))
-        throw SolverError(std::string(WHERE) + "grain " + std::to_string(g) + " has mass " +
-                          number(mass) +
-                          "; give a positive, finite mass, or +infinity for a wall (whose DOFs "
-                          "are then prescribed)");
-      grains[g].mass = mass;
-      grains[g].radius = input.grains[g].radius;
-    }
-    return grains;
-  }
-
-  Contact network_contact(const GatheredContact &c, bool flip)
-  {
-    Contact contact;
-    const double sign = flip ? -1.0 : 1.0;
-    contact.i = flip ? c.j : c.i;
-    contact.j = flip ? c.i : c.j;
-    contact.normal = Eigen::Vector3d(sign * c.normal[0], sign * c.normal[1], sign * c.normal[2]);
-    contact.kn = c.kn;
-    contact.kt = c.kt;
-    contact.cn = c.cn;
-    contact.ct = c.ct;
-    return contact;
-  }
-
-  // the network the fix gathers: contacts from the lower to the higher grain
-  // index, sorted by (i, j); a bad contact is reported with its index in the input
-  ContactNetwork build_network(const GatheredDriveInput &input, ContactModel model,
-                               std::vector<Grain> grains)
-  {
-    std::vector<Contact> contacts;
-    contacts.reserve(input.contacts.size());
-    for (const GatheredContact &c : input.contacts)
-      contacts.push_back(network_contact(c, c.i > c.j));
-    std::stable_sort(contacts.begin(), contacts.end(), [](const Contact &a, const Contact &b) {
-      return (a.i < b.i) || (a.i == b.i && a.j < b.j);
-    });
-    try {
-      return ContactNetwork(input.dimension, model, grains, std::move(contacts));
-    } catch (SolverError &) {
-      // the same checks on the contacts as given, for the message
-      std::vector<Contact> as_given;
-      as_given.reserve(input.contacts.size());
-      for (const GatheredContact &c : input.contacts) as_given.push_back(network_contact(c, false));
-      ContactNetwork check(input.dimension, model, std::move(grains), std::move(as_given));
-      throw;
-    }
   }
 
   // the prescribed DOFs: the caller's, then the DOFs of the walls it left out (clamped)
@@ -236,28 +169,16 @@ bool solve_gathered_drive(const GatheredDriveInput &input, GatheredDriveResult &
   result.relative_residual = 0.0;
   result.factorisation.clear();
   try {
-    int mpi_initialised = 0, mpi_finalised = 0;
-    MPI_Initialized(&mpi_initialised);
-    MPI_Finalized(&mpi_finalised);
-    if (!mpi_initialised || mpi_finalised)
-      throw SolverError(std::string(WHERE) +
-                        "MPI is not initialised (or already finalised): the solvers run on "
-                        "MPI_COMM_SELF; call MPI_Init first");
-    if (input.dimension != 2 && input.dimension != 3)
-      throw SolverError(std::string(WHERE) + "dimension must be 2 or 3, got " +
-                        std::to_string(input.dimension));
-    if (input.model != FacadeContactModel::Normal && input.model != FacadeContactModel::Full)
-      throw SolverError(std::string(WHERE) + "unknown contact model " +
-                        std::to_string(static_cast<int>(input.model)) +
-                        " (FacadeContactModel::Normal or Full)");
-    const ContactModel model = (input.model == FacadeContactModel::Full) ? ContactModel::Full
-                                                                         : ContactModel::Normal;
+    Gathered::require_mpi(WHERE);
+    const ContactModel model = Gathered::contact_model(WHERE, input.dimension, input.model);
     const double omega = angular_frequency(input);
     const LinearSolverChoice choice = solver_choice(input);
     const MumpsSettings settings = mumps_settings(input);
 
     std::vector<bool> wall;
-    const ContactNetwork network = build_network(input, model, network_grains(input, wall));
+    const ContactNetwork network = Gathered::build_network(
+        input.dimension, model, Gathered::network_grains(WHERE, input.grains, wall),
+        input.contacts);
     std::vector<int> dofs;
     Eigen::VectorXcd values;
     prescribed_dofs(input, network, wall, dofs, values);

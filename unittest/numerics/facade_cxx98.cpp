@@ -80,4 +80,61 @@ bool bad_drive(std::string &message, int &status)
   return ok;
 }
 
+Acoustic::GatheredModesInput chain_modes_input(int n, double m, double k, bool walls)
+{
+  Acoustic::GatheredModesInput input;
+  input.dimension = 2;
+  input.model = Acoustic::FacadeContactModel::Normal;
+  for (int g = 0; g < n; g++) input.grains.push_back(Acoustic::GatheredGrain(m, 0.5));
+  for (int e = 0; e < 2; e++) {
+    input.grains.push_back(Acoustic::GatheredGrain(walls ? HUGE_VAL : m, 0.5));
+    if (!walls) input.fixed.push_back(n + e);
+  }
+  // the springs from x = n + 1 down to x = 0: x position p is grain p - 1,
+  // 0 is grain n, n + 1 is grain n + 1
+  for (int p = n + 1; p >= 1; p--) {
+    const int right = (p == n + 1) ? n + 1 : p - 1, left = (p == 1) ? n : p - 2;
+    Acoustic::GatheredContact contact;
+    contact.i = right;    // from the right grain: normal from j (left) to i (right) is +x
+    contact.j = left;
+    contact.normal[0] = 1.0;
+    contact.kn = k;
+    input.contacts.push_back(contact);
+  }
+  return input;
+}
+
+bool solve_modes(const Acoustic::GatheredModesInput &input, Acoustic::GatheredModesResult &result)
+{
+  return Acoustic::solve_gathered_modes(input, result);
+}
+
+Acoustic::GatheredPulseInput chain_pulse_input(int n, double m, double k, double T, int samples)
+{
+  Acoustic::GatheredPulseInput input;
+  input.dimension = 2;
+  input.model = Acoustic::FacadeContactModel::Normal;
+  for (int g = 0; g < n + 2; g++) input.grains.push_back(Acoustic::GatheredGrain(m, 0.5));
+  for (int g = n; g >= 0; g--) {
+    Acoustic::GatheredContact contact;
+    contact.i = g;
+    contact.j = g + 1;
+    contact.normal[0] = -1.0;    // from g + 1 to g
+    contact.kn = k;
+    input.contacts.push_back(contact);
+  }
+  input.source.push_back(0);
+  input.detector.push_back(n + 1);
+  input.direction[0] = 1.0;
+  input.direction[1] = input.direction[2] = 0.0;
+  input.duration = T;
+  input.samples = samples;
+  return input;
+}
+
+bool solve_pulse(const Acoustic::GatheredPulseInput &input, Acoustic::GatheredPulseResult &result)
+{
+  return Acoustic::solve_gathered_pulse(input, result);
+}
+
 }    // namespace FacadeCxx98

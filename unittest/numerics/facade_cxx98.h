@@ -10,6 +10,8 @@
 
 #include "acoustic_contact_factor.h"
 #include "acoustic_gathered_drive.h"
+#include "acoustic_gathered_modes.h"
+#include "acoustic_gathered_pulse.h"
 
 #include <string>
 #include <vector>
@@ -34,6 +36,20 @@ bool contact_factor(const double *qi_re, const double *qi_im, const double *qj_r
 
 // a bad input built in C++98 code (dimension 4): the status and message come back
 bool bad_drive(std::string &message, int &status);
+
+// 2D chain along x, model normal: free grains 0 .. n-1 of mass m at x = 1 ..
+// n, and two end grains n (x = 0) and n + 1 (x = n + 1): walls (infinite
+// mass) if walls, else grains of mass m listed as fixed; springs k between
+// neighbours, given in reverse order and from the far grain (the facade
+// reorders them).  Eigenfrequencies of x: 2 sqrt(k/m) sin(j pi / (2 (n + 1))) / (2 pi).
+Acoustic::GatheredModesInput chain_modes_input(int n, double m, double k, bool walls);
+bool solve_modes(const Acoustic::GatheredModesInput &input, Acoustic::GatheredModesResult &result);
+
+// 2D chain along x, model normal: grains 0 .. n + 1 of mass m at x = 0 .. n + 1,
+// springs k between neighbours; grain 0 the source, grain n + 1 the detector,
+// pulse along +x, duration T and `samples` samples
+Acoustic::GatheredPulseInput chain_pulse_input(int n, double m, double k, double T, int samples);
+bool solve_pulse(const Acoustic::GatheredPulseInput &input, Acoustic::GatheredPulseResult &result);
 
 }    // namespace FacadeCxx98
 
