@@ -47,6 +47,14 @@ def test_time_of_flight_and_power_laws():
     assert mid[0] == pytest.approx(math.sqrt(96.0))
 
 
+def test_arrival_fit_of_points_on_a_line():
+    """Fig. 6's fit: arrivals t = L / 0.25 + 3 give back c = 0.25, t0 = 3 and the range of L"""
+    distance = np.array([8.0, 8.2, 12.0, 25.0, 50.5])
+    fit = sound.arrival_fit(distance, distance / 0.25 + 3.0)
+    assert fit["speed"] == pytest.approx(0.25, rel=1e-12) and fit["intercept"] == pytest.approx(3.0, rel=1e-12)
+    assert (fit["L_min"], fit["L_max"], fit["samples"]) == (8.0, 50.5, 5)
+
+
 def test_ensemble_mean_and_rms():
     t = np.linspace(0.0, 10.0, 101)
     base = np.sin(t)
