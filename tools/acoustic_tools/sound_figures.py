@@ -343,9 +343,9 @@ def fig2_directions(histogram, path, title):
         ax.set_ylim(0.0, top)
         ax.set_yticklabels([])
         ax.set_title(f"{name} contacts ({h['count']})\n" + r"$F_2 = \langle n_y^2\rangle$" + f" = {h['F2']:.3f}",
-                     fontsize=9)
-    fig.suptitle(title, fontsize=9)
-    _save(fig, path, dpi=80, colours=32)
+                     fontsize=11)
+    fig.suptitle(title, fontsize=11)
+    _save(fig, path, dpi=110, colours=32)
 
 
 def _arrows(ax, x, y, u, v, magnification):
