@@ -240,7 +240,9 @@ case "$cmd" in
   test)
     configure_and_build
     say "running the test suite"
-    ctest --test-dir "$build" --output-on-failure ;;
+    # as many tests at a time as cores; a test of 2 MPI ranks takes 2 (its
+    # PROCESSORS property)
+    ctest --test-dir "$build" --output-on-failure -j "$jobs" ;;
   demo)
     configure_and_build
     exec "$top/examples/avalanche/run.sh" "$build" ;;

@@ -8,6 +8,8 @@
 
 #include "fix_acoustic_mindlin.h"
 
+#include "acoustic_liggghts_network.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -15,11 +17,6 @@
 #include "force.h"
 #include "group.h"
 #include "memory.h"
-#include "neigh_list.h"
-#include "pair_gran.h"
-#include "pair_gran_proxy.h"
-#include "properties.h"
-#include "property_registry.h"
 #include "update.h"
 
 #include "acoustic_contact_factor.h"
@@ -39,33 +36,11 @@ using namespace FixConst;
 namespace {
 
 const char *const CMD = "fix acoustic/mindlin";
-const int GRAIN_WORDS = 4;      // tag, mass, radius, source
-const int CONTACT_WORDS = 7;    // tag lo, tag hi, normal (3, from hi to lo), k_n, k_t
-
 bool parse_number(const char *s, double &value)
 {
   char *end = NULL;
   value = strtod(s, &end);
   return end != s && *end == '\0' && std::isfinite(value);
-}
-
-// rank 0 gets every processor's words, in rank order
-void gather_words(MPI_Comm world, int me, int nprocs, const std::vector<double> &mine,
-                  std::vector<double> &all)
-{
-  int n = static_cast<int>(mine.size());
-  std::vector<int> counts(nprocs, 0), displs(nprocs, 0);
-  MPI_Gather(&n, 1, MPI_INT, &counts[0], 1, MPI_INT, 0, world);
-  int total = 0;
-  if (me == 0)
-    for (int p = 0; p < nprocs; p++) {
-      displs[p] = total;
-      total += counts[p];
-    }
-  all.assign(total > 0 ? total : 1, 0.0);
-  all.resize(total);
-  MPI_Gatherv(n ? const_cast<double *>(&mine[0]) : NULL, n, MPI_DOUBLE, total ? &all[0] : NULL,
-              &counts[0], &displs[0], MPI_DOUBLE, 0, world);
 }
 
 }    // namespace
@@ -76,12 +51,14 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), source_group(-1), source_groupbit(0), frequency(-1.0), amplitude(-1.0),
     direction_given(false), direction_axis(-1), mode_normal(false), youngs_modulus(-1.0),
     poisson_ratio(0.0), kappa_scale(1.0), ratio(2.0 / 7.0), cmu(1.0), mu_min(0.0),
-    model_full(false), pair(NULL), factor_offset(-1), rows(NULL), maxrows(0)
+    model_full(false), network(NULL), rows(NULL), maxrows(0)
 {
   direction[0] = direction[1] = direction[2] = 0.0;
   stats[0] = 0.0;
   stats[1] = stats[2] = 1.0;
   parse(narg, arg);
+  network = new AcousticLiggghtsNetwork(lmp, std::string(CMD) + " " + id);
+  network->set_stiffness(youngs_modulus, poisson_ratio, kappa_scale, ratio);
 
   vector_flag = 1;
   size_vector = 3;
@@ -97,6 +74,7 @@ FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
 FixAcousticMindlin::~FixAcousticMindlin()
 {
   memory->destroy(rows);
+  delete network;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -236,26 +214,7 @@ int FixAcousticMindlin::setmask()
 
 void FixAcousticMindlin::init()
 {
-  if (!atom->radius_flag || !atom->rmass_flag)
-    error_all("%s %s: needs atoms with radius and per-atom mass (atom_style granular)", CMD, id);
-  pair = dynamic_cast<PairGran *>(force->pair_match("gran", 0));
-  if (!pair)
-    error_all("%s %s: needs pair_style gran (model hertz tangential history/acoustic)", CMD, id);
-  if (!pair->contact_match("tangential", "history/acoustic"))
-    error_all("%s %s: the tangential model of pair_style gran has no acoustic history value "
-              "\"acousticFrictionReduction\": use tangential history/acoustic",
-              CMD, id);
-  if (!pair->contact_match("normal", "hertz"))
-    error_all("%s %s: keyword stiffness hertz needs pair_style gran model hertz (hooke and the "
-              "other normal models are not available yet)",
-              CMD, id);
-  factor_offset = static_cast<PairGranProxy *>(pair)->get_history_offset("acousticFrictionReduction");
-  if (factor_offset < 0)
-    error_all("%s %s: pair_style gran has no history value \"acousticFrictionReduction\" "
-              "(tangential history/acoustic)",
-              CMD, id);
-  if (force->newton_pair)
-    error_all("%s %s: needs newton off (pair_style gran with a history model)", CMD, id);
+  network->init(true);
   if (group->count(source_group) == 0)
     error_all("%s %s: keyword source: group %s has no atoms; nothing would vibrate", CMD, id,
               group->names[source_group]);
@@ -274,130 +233,33 @@ void FixAcousticMindlin::pre_force(int)
 }
 
 /* ----------------------------------------------------------------------
-   the contacts of this processor's neighbor list between atoms of the
-   group, with their Hertz stiffnesses (the overlap as pair gran sees it)
-------------------------------------------------------------------------- */
-
-void FixAcousticMindlin::collect()
-{
-  contacts.clear();
-  NeighList *list = pair->list;
-  NeighList *hlist = pair->listgranhistory;
-  if (!list || !hlist || !hlist->firstdouble)
-    error_all("%s %s: pair_style gran has no contact history list", CMD, id);
-  double **Yeff = force->registry.getMatrixProperty("Yeff", CMD)->data;
-  double **coeffFrict = force->registry.getMatrixProperty("coeffFrict", CMD)->data;
-  const int dnum = pair->dnum();
-  double **x = atom->x;
-  double *radius = atom->radius;
-  int *mask = atom->mask;
-  int *type = atom->type;
-  int *tag = atom->tag;
-  const int nlocal = atom->nlocal;
-  const double estar = youngs_modulus / (2.0 * (1.0 - poisson_ratio * poisson_ratio));
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    if (!(mask[i] & groupbit)) continue;
-    const int *jlist = list->firstneigh[i];
-    double *hist = hlist->firstdouble[i];
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      if (!(mask[j] & groupbit)) continue;
-      const double delx = x[i][0] - x[j][0];
-      const double dely = x[i][1] - x[j][1];
-      const double delz = x[i][2] - x[j][2];
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      const double radsum = radius[i] + radius[j];
-      if (rsq >= radsum * radsum) continue;
-      const double r = sqrt(rsq);
-      const double rinv = 1.0 / r;
-      LocalContact c;
-      c.i = i;
-      c.j = j;
-      c.n[0] = delx * rinv;
-      c.n[1] = dely * rinv;
-      c.n[2] = delz * rinv;
-      // the elastic normal force of LIGGGHTS's hertz (normal_model_hertz.h)
-      const double deltan = radsum - r;
-      const double reff = radius[i] * radius[j] / (radius[i] + radius[j]);
-      const double kn_pair = 4. / 3. * Yeff[type[i]][type[j]] * sqrt(reff * deltan);
-      c.fn = kn_pair * deltan;
-      // the fix's Hertz stiffness at that force (the LAMMPS fix's hertz_kappa, hertz_normal_stiffness)
-      const double rstar = 1.0 / (1.0 / radius[i] + 1.0 / radius[j]);
-      const double kappa = kappa_scale * (4.0 / 3.0 * estar * sqrt(rstar));
-      c.kn = (c.fn > 0.0) ? 1.5 * pow(kappa, 2.0 / 3.0) * cbrt(c.fn) : 0.0;
-      c.kt = ratio * c.kn;
-      c.mu = coeffFrict[type[i]][type[j]];
-      c.slot = &hist[dnum * jj + factor_offset];
-      c.counted = j < nlocal || tag[i] < tag[j];
-      if (!(std::isfinite(c.fn) && std::isfinite(c.kn)))
-        error->one(FLERR, "fix acoustic/mindlin: a contact has a non-finite Hertz force or "
-                          "stiffness; check youngsModulus, poissonsRatio and the keywords "
-                          "stiffness, kappa_scale");
-      contacts.push_back(c);
-    }
-  }
-}
-
-/* ----------------------------------------------------------------------
    gather, solve on rank 0, broadcast, set every contact's factor
 ------------------------------------------------------------------------- */
 
 void FixAcousticMindlin::update_factors()
 {
-  collect();
+  network->collect(groupbit);
+  const std::vector<AcousticLiggghtsNetwork::Contact> &contacts = network->contacts();
   const int dim = domain->dimension;
   const Acoustic::FacadeContactModel::Value model =
       model_full ? Acoustic::FacadeContactModel::Full : Acoustic::FacadeContactModel::Normal;
   const int ndof = Acoustic::facade_dofs_per_grain(dim, model);
   int *tag = atom->tag;
-  int *mask = atom->mask;
   const int me = comm->me;
 
   std::vector<double> tags_sorted;    // every grain of the group, by atom ID
   std::vector<double> q;              // their DOF values, 2 ndof each
   int solved = 1;
   if (frequency > 0.0) {
-    std::vector<double> grain_words, contact_words;
-    for (int i = 0; i < atom->nlocal; i++) {
-      if (!(mask[i] & groupbit)) continue;
-      grain_words.push_back(tag[i]);
-      grain_words.push_back(atom->rmass[i]);
-      grain_words.push_back(atom->radius[i]);
-      grain_words.push_back((mask[i] & source_groupbit) ? 1.0 : 0.0);
-    }
-    for (size_t k = 0; k < contacts.size(); k++) {
-      const LocalContact &c = contacts[k];
-      if (!c.counted || !(c.kn > 0.0)) continue;
-      const bool flip = tag[c.i] > tag[c.j];
-      const double sign = flip ? -1.0 : 1.0;
-      contact_words.push_back(flip ? tag[c.j] : tag[c.i]);
-      contact_words.push_back(flip ? tag[c.i] : tag[c.j]);
-      for (int d = 0; d < 3; d++) contact_words.push_back(sign * c.n[d]);
-      contact_words.push_back(c.kn);
-      contact_words.push_back(c.kt);
-    }
-    std::vector<double> all_grains, all_contacts;
-    gather_words(world, me, comm->nprocs, grain_words, all_grains);
-    gather_words(world, me, comm->nprocs, contact_words, all_contacts);
-
-    int ngrains = 0;
+    AcousticLiggghtsNetwork::Gathered net;
+    network->gather(groupbit, source_groupbit, model, net);
     std::string failure;
     if (me == 0) {
-      const int ng = static_cast<int>(all_grains.size()) / GRAIN_WORDS;
-      std::vector<std::pair<double, int> > order(ng);
-      for (int g = 0; g < ng; g++) order[g] = std::make_pair(all_grains[GRAIN_WORDS * g], g);
-      std::sort(order.begin(), order.end());
-      Acoustic::GatheredDriveInput in;
-      in.dimension = dim;
-      in.model = model;
+      Acoustic::GatheredDriveInput &in = net.input;
       in.frequency = frequency;
-      tags_sorted.resize(ng);
+      const int ng = static_cast<int>(net.tags.size());
       for (int g = 0; g < ng; g++) {
-        const double *w = &all_grains[GRAIN_WORDS * order[g].second];
-        tags_sorted[g] = w[0];
-        in.grains.push_back(Acoustic::GatheredGrain(w[1], w[2]));
-        if (w[3] == 0.0) continue;
+        if (!net.flag[g]) continue;
         if (mode_normal) {
           in.prescribed.push_back(Acoustic::PrescribedDof(g, direction_axis, direction[direction_axis]));
         } else {
@@ -405,24 +267,11 @@ void FixAcousticMindlin::update_factors()
           for (int d = dim; d < ndof; d++) in.prescribed.push_back(Acoustic::PrescribedDof(g, d, 0.0));
         }
       }
-      const int nc = static_cast<int>(all_contacts.size()) / CONTACT_WORDS;
-      for (int k = 0; k < nc; k++) {
-        const double *w = &all_contacts[CONTACT_WORDS * k];
-        Acoustic::GatheredContact c;
-        c.i = static_cast<int>(std::lower_bound(tags_sorted.begin(), tags_sorted.end(), w[0]) -
-                               tags_sorted.begin());
-        c.j = static_cast<int>(std::lower_bound(tags_sorted.begin(), tags_sorted.end(), w[1]) -
-                               tags_sorted.begin());
-        for (int d = 0; d < 3; d++) c.normal[d] = w[2 + d];
-        c.kn = w[5];
-        c.kt = w[6];
-        in.contacts.push_back(c);
-      }
       Acoustic::GatheredDriveResult out;
       Acoustic::solve_gathered_drive(in, out);
       if (out.status == Acoustic::FacadeStatus::Success) {
         q.swap(out.q);
-        ngrains = ng;
+        tags_sorted.swap(net.tags);
       } else if (out.status == Acoustic::FacadeStatus::InvalidInput ||
                  out.status == Acoustic::FacadeStatus::InternalError) {
         failure = out.message;
@@ -452,13 +301,7 @@ void FixAcousticMindlin::update_factors()
       statistics();
       return;
     }
-    MPI_Bcast(&ngrains, 1, MPI_INT, 0, world);
-    tags_sorted.resize(ngrains);
-    q.resize(static_cast<size_t>(ngrains) * 2 * ndof);
-    if (ngrains > 0) {
-      MPI_Bcast(&tags_sorted[0], ngrains, MPI_DOUBLE, 0, world);
-      MPI_Bcast(&q[0], ngrains * 2 * ndof, MPI_DOUBLE, 0, world);
-    }
+    network->broadcast(tags_sorted, q, ndof);
   }
 
   // every copy of every contact, from its lower to its higher atom ID
@@ -478,17 +321,14 @@ void FixAcousticMindlin::update_factors()
   int bad = 0;
   std::string bad_message;
   for (size_t k = 0; k < contacts.size(); k++) {
-    const LocalContact &c = contacts[k];
+    const AcousticLiggghtsNetwork::Contact &c = contacts[k];
     const bool flip = tag[c.i] > tag[c.j];
     const int a = flip ? c.j : c.i, b = flip ? c.i : c.j;
     double s = 1.0, ut = 0.0;
     if (frequency > 0.0 && c.kn > 0.0) {
-      const int ga = static_cast<int>(
-          std::lower_bound(tags_sorted.begin(), tags_sorted.end(), double(tag[a])) - tags_sorted.begin());
-      const int gb = static_cast<int>(
-          std::lower_bound(tags_sorted.begin(), tags_sorted.end(), double(tag[b])) - tags_sorted.begin());
-      if (ga >= static_cast<int>(tags_sorted.size()) || gb >= static_cast<int>(tags_sorted.size()) ||
-          tags_sorted[ga] != tag[a] || tags_sorted[gb] != tag[b]) {
+      const int ga = AcousticLiggghtsNetwork::grain_index(tags_sorted, tag[a]);
+      const int gb = AcousticLiggghtsNetwork::grain_index(tags_sorted, tag[b]);
+      if (ga < 0 || gb < 0) {
         bad++;
         continue;
       }
@@ -534,6 +374,7 @@ void FixAcousticMindlin::update_factors()
 
 void FixAcousticMindlin::statistics()
 {
+  const std::vector<AcousticLiggghtsNetwork::Contact> &contacts = network->contacts();
   double sum = 0.0, count = 0.0, minimum = 1.0;
   for (size_t k = 0; k < contacts.size(); k++) {
     if (!contacts[k].counted) continue;
@@ -559,5 +400,5 @@ double FixAcousticMindlin::compute_vector(int n)
 
 double FixAcousticMindlin::memory_usage()
 {
-  return contacts.capacity() * sizeof(LocalContact) + maxrows * size_local_cols * sizeof(double);
+  return network->contacts().capacity() * sizeof(AcousticLiggghtsNetwork::Contact) + maxrows * size_local_cols * sizeof(double);
 }

@@ -45,15 +45,6 @@ class FixAcousticMindlin : public Fix {
   double memory_usage();
 
  private:
-  // one contact of this processor's neighbor list between atoms of the group
-  struct LocalContact {
-    int i, j;             // local atom indices (j may be a ghost)
-    double n[3];          // unit normal from j to i
-    double fn, kn, kt, mu;
-    double *slot;         // the history value 1 - s
-    bool counted;         // this processor's copy counts (owned row)
-  };
-
   int source_group, source_groupbit;
   double frequency, amplitude;
   double direction[3];
@@ -64,18 +55,15 @@ class FixAcousticMindlin : public Fix {
   double cmu, mu_min;
   bool model_full;
 
-  class PairGran *pair;
-  int factor_offset;
+  class AcousticLiggghtsNetwork *network;    // the contact walker and gatherer
   double stats[3];      // contacts, mean factor, min factor
 
-  std::vector<LocalContact> contacts;
   double **rows;        // local output: tag i, tag j, F_n, k_n, U_t, s
   int maxrows;
 
   void error_all(const char *fmt, ...);
   void parse(int narg, char **arg);
   void normalise_direction();
-  void collect();
   void update_factors();
   void statistics();
 };

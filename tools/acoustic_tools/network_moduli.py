@@ -14,7 +14,10 @@ grains take the positions of least elastic energy, K u = f.  The box is
 periodic along x with length `width`; the 2D layer counts as one diameter
 (unit) thick, as in paper 003.  The prestress (geometric) term f_n / r of
 the stiffness is left out: it is of relative size overlap / radius, 1e-3 at
-p = 1e-4.  numpy and scipy only."""
+p = 1e-4.  model "normal" is the frictionless network of a packing made
+with mu = 0 (in.measure's model normal): normal springs only, on the
+grains' translations (no tangential spring, no rotation); its C33 is zero,
+since flat frictionless walls carry no shear force.  numpy and scipy only."""
 import numpy as np
 import scipy.sparse
 import scipy.sparse.linalg
@@ -44,7 +47,10 @@ def _contact_geometry(grains, contacts, width, height):
     return ci, cj, wall, which_wall, normal, radius[ci], arm_j
 
 
-def compatibility(grains, contacts, width, height, eta=1.0):
+MODELS = ("full", "normal")
+
+
+def compatibility(grains, contacts, width, height, eta=1.0, model="full"):
     """The linear network of a 2D packing between two walls (bottom y = 0,
     top y = height): the compatibility matrix B (2 rows per contact: the
     normal and tangential relative displacement of the contact point, j
@@ -52,7 +58,11 @@ def compatibility(grains, contacts, width, height, eta=1.0):
     in the order of grains["id"]), the springs (k_n, eta k_n per contact,
     in the order of B's rows), and the geometry of _contact_geometry as a
     dict: normal, tangent, wall (bool), which_wall (0 bottom, 1 top) per
-    contact.  A wall's motion w enters a contact's rows as (w.n, w.t)."""
+    contact.  A wall's motion w enters a contact's rows as (w.n, w.t).
+    model "normal": the frictionless network, 2 DOFs x, y per grain and
+    the tangential springs zero (the rows stay two per contact)."""
+    if model not in MODELS:
+        raise ValueError(f"model {model!r}: one of {MODELS}")
     ci, cj, wall, which_wall, normal, arm_i, arm_j = _contact_geometry(grains, contacts, width, height)
     kn = np.asarray(contacts[3], dtype=float)
     tangent = np.column_stack((-normal[:, 1], normal[:, 0]))
@@ -85,6 +95,10 @@ def compatibility(grains, contacts, width, height, eta=1.0):
     B = scipy.sparse.csr_matrix((vals, (rows, cols)), shape=(2 * ncontacts, 3 * ngrains))
     springs = np.empty(2 * ncontacts)
     springs[0::2], springs[1::2] = kn, eta * kn
+    if model == "normal":
+        translations = np.arange(3 * ngrains) % 3 != 2
+        B = B[:, np.flatnonzero(translations)]
+        springs[1::2] = 0.0
     return B, springs, {"normal": normal, "tangent": tangent, "wall": wall, "which_wall": which_wall}
 
 
@@ -122,13 +136,14 @@ def regularised(K):
     return (K + scipy.sparse.identity(K.shape[0], format="csc") * (1e-12 * scale)).tocsc()
 
 
-def network_response(grains, contacts, width, height, wall_motion, eta=1.0):
+def network_response(grains, contacts, width, height, wall_motion, eta=1.0, model="full"):
     """the force (x, y) of the grains on the top wall per unit area after the
     top wall moved by wall_motion = (ux, uy), the bottom wall and the
     periodic box staying put; grains: dict with id, x, y, radius; contacts:
     the columns of fix acoustic/mindlin's local array by position
-    (0: i, 1: j, 0 for a wall, 3: k_n; a lammps_output.Snapshot)"""
-    B, springs, geometry = compatibility(grains, contacts, width, height, eta)
+    (0: i, 1: j, 0 for a wall, 3: k_n; a lammps_output.Snapshot); model:
+    "full" or "normal" (frictionless, compatibility)"""
+    B, springs, geometry = compatibility(grains, contacts, width, height, eta, model)
     prescribed = wall_stretch(geometry, {1: wall_motion})
     K = (B.T @ scipy.sparse.diags(springs) @ B).tocsc()
     load = -(B.T @ (springs * prescribed))
@@ -137,10 +152,11 @@ def network_response(grains, contacts, width, height, wall_motion, eta=1.0):
     return wall_force(geometry, springs, stretch) / width
 
 
-def network_moduli(grains, contacts, width, height, eta=1.0, strain=1e-6):
+def network_moduli(grains, contacts, width, height, eta=1.0, strain=1e-6, model="full"):
     """C22 (top wall pushed down by strain * height) and C33 (top wall slid
     by strain * height along x) of the network; linear, so any small strain
-    gives the same moduli"""
-    push = network_response(grains, contacts, width, height, (0.0, -strain * height), eta)
-    slide = network_response(grains, contacts, width, height, (strain * height, 0.0), eta)
+    gives the same moduli.  model "normal": the frictionless network (C33
+    zero: no tangential spring at the walls)"""
+    push = network_response(grains, contacts, width, height, (0.0, -strain * height), eta, model)
+    slide = network_response(grains, contacts, width, height, (strain * height, 0.0), eta, model)
     return {"C22": float(push[1] / strain), "C33": float(-slide[0] / strain)}

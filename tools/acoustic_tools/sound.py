@@ -77,6 +77,15 @@ def time_of_flight_speed(distance1, time1, distance2, time2):
     return (distance2 - distance1) / (time2 - time1)
 
 
+def arrival_fit(distance, t10):
+    """Paper 003 Fig. 6's slope: the least-squares line t10 = L / c + t0
+    through the 10 % arrivals of every sample, {"speed": c, "intercept": t0,
+    "L_min", "L_max": the range of L it is fitted on, "samples"}"""
+    slope, intercept = np.polyfit(distance, t10, 1)
+    return {"speed": 1.0 / slope, "intercept": intercept, "L_min": float(np.min(distance)),
+            "L_max": float(np.max(distance)), "samples": len(distance)}
+
+
 def power_law_fit(x, y):
     """least-squares fit y = a x^b in log-log: (b, a)"""
     slope, intercept = np.polyfit(np.log(x), np.log(y), 1)

@@ -39,6 +39,8 @@ PAPER_TABLE_II = {
     1e-5: ("0.78 ± 0.06", "(5.4 ± 0.5)e-3", "(3.5 ± 0.2)e-3", "(7.4 ± 0.3)e-3", "(1.1 ± 0.2)e-3"),
     1e-4: ("0.71 ± 0.04", "(1.35 ± 0.09)e-2", "(6.8 ± 0.4)e-3", "(1.88 ± 0.08)e-2", "(4.0 ± 0.5)e-3"),
 }
+# Table II's C33, as numbers
+PAPER_C33 = {1e-7: 1.2e-4, 1e-6: 0.35e-3, 1e-5: 1.1e-3, 1e-4: 4.0e-3}
 # C22 and Phi3* of the two tables: the paper's c_l = sqrt(C22 / Phi3*)
 PAPER_C22_PHI3STAR = {1e-7: (13.9e-4, 0.48), 1e-6: (3.2e-3, 0.49), 1e-5: (7.4e-3, 0.50), 1e-4: (1.88e-2, 0.52)}
 # paper 003, Table IV: C~22(1)/C22, C~22(2)/C22, C~33(1)/C33, C~33(2)/C33
@@ -518,6 +520,34 @@ def overshoots(per_sample):
     return [(r["overshoot"], r["sigma1_over_sigma2"], q) for (q, _, _), r in per_sample.items() if "overshoot" in r]
 
 
+def c33_candidates(per_sample, pressures, height=25):
+    """Two candidate causes of a C33 above Table II's, tested within our own
+    ensembles: at each pressure, the least-squares line of C33 against z*
+    over the H = 25 packings, read at the paper's z* (does the z* offset of
+    Table I account for the excess?), and the line against log(p_peak / p)
+    read at the smallest overshoot of the ensemble (would a gentler
+    compression?); {p: {"samples", "C33", "paper", "z_star", "paper_z_star",
+    "slope_z", "slope_z_se", "C33_at_paper_z", "r_overshoot",
+    "C33_at_least_overshoot"}}"""
+    out = {}
+    for p in pressures:
+        rows = [(r["z_star"], math.log(r["overshoot"]), r["C33"]) for (q, h, _), r in per_sample.items()
+                if q == p and h == height and all(k in r for k in ("z_star", "overshoot", "C33"))]
+        if len(rows) < 3 or p not in sound.PAPER_TABLE_I:
+            continue
+        z, log_overshoot, c33 = (np.asarray(v) for v in zip(*rows))
+        (slope, intercept), cov = np.polyfit(z, c33, 1, cov=True)
+        paper_z = sound.PAPER_TABLE_I[p]["z_star"][0]
+        slope_o, intercept_o = np.polyfit(log_overshoot, c33, 1)
+        out[p] = {"samples": len(rows), "C33": float(c33.mean()), "paper": PAPER_C33[p], "z_star": float(z.mean()),
+                  "paper_z_star": paper_z, "slope_z": float(slope), "slope_z_se": float(math.sqrt(cov[0, 0])),
+                  "C33_at_paper_z": float(slope * paper_z + intercept),
+                  "r_overshoot": float(np.corrcoef(log_overshoot, c33)[0, 1]),
+                  "least_overshoot": float(math.exp(log_overshoot.min())),
+                  "C33_at_least_overshoot": float(slope_o * log_overshoot.min() + intercept_o)}
+    return out
+
+
 def pressures_of(per_sample):
     """The pressures of the samples, in order"""
     return sorted({p for p, _, _ in per_sample})
@@ -574,8 +604,13 @@ def collect_results(out, per_sample, off_target, not_at_rest):
     series = height_series(per_sample, 1e-4)
     if series:
         results["disordered_1e-4"] = series
+    # Fig. 6's line: the 10 % arrivals of every sample at 1e-4, all heights
+    arrivals = [(r["h"], r["t10_A"]) for key, r in per_sample.items() if key[0] == 1e-4 and "t10_A" in r]
+    if len({h for h, _ in arrivals}) >= 2:
+        results["arrival_fit_1e-4"] = sound.arrival_fit(*map(np.asarray, zip(*arrivals)))
 
     results["checks"] = checks_table(per_sample, pressures)
+    results["c33_candidates"] = {f"{p:g}": c for p, c in c33_candidates(per_sample, pressures).items()}
     # the same checks for every piston (mass, dashpot speed) at p = 1e-4, H = 25
     results["pistons"] = piston_checks(out)
     return results
@@ -759,6 +794,19 @@ def tables(results, pressures):
         e = results["pressures"][f"{p:g}"]
         lines.append(f"| {p:g} | {_cell(e, 'C22_dem_over_network')} | {_cell(e, 'C33_dem_over_network')} |")
     lines.append("")
+    if results.get("c33_candidates"):
+        lines += _table_head(["C33 against two candidate causes of its excess, within our H = 25 packings: the line",
+                              "C33(z*) read at the paper's z*, and the line C33(log p_peak/p) read at the smallest "
+                              "overshoot"],
+                             ["p", "samples", "C33 (ours / paper)", "z* (ours / paper)", "dC33/dz*",
+                              "C33 at the paper's z* / paper", "r(C33, log p_peak/p)",
+                              "C33 at the least overshoot / paper"])
+        for p, c in results["c33_candidates"].items():
+            lines.append(f"| {p} | {c['samples']} | {c['C33']:.3g} / {c['paper']:.3g} ({c['C33'] / c['paper']:.2f}) | "
+                         f"{c['z_star']:.3f} / {c['paper_z_star']:.2f} | {c['slope_z']:.2g} ± {c['slope_z_se']:.1g} | "
+                         f"{c['C33_at_paper_z'] / c['paper']:.2f} | {c['r_overshoot']:+.2f} | "
+                         f"{c['C33_at_least_overshoot'] / c['paper']:.2f} (p_peak/p = {c['least_overshoot']:.3g}) |")
+        lines.append("")
     for title, paper_table, keys in (
             ("Table IV (Appendix B, Eq. B2): apparent moduli of forces f0 sin(n π y / L2) on the non-rattlers, walls "
              "held, over the global moduli of the same contact network (H = 25 packings; mean ± s.d.)",
@@ -801,6 +849,12 @@ def tables(results, pressures):
         lines.append("")
         lines.append("correlation of sigma1/sigma2 with log(p_peak/p) over all packings: "
                      f"{results['log_overshoot_stress_ratio_correlation']:.3f}")
+    if "arrival_fit_1e-4" in results:
+        fit = results["arrival_fit_1e-4"]
+        lines.append("")
+        lines.append(f"Fig. 6 (p = 1e-4): the line through the 10 % arrivals of {fit['samples']} samples, "
+                     f"L = {fit['L_min']:.1f} ... {fit['L_max']:.1f}: 1/slope = {fit['speed']:.4f}, "
+                     f"intercept {fit['intercept']:.2f} (paper's fit: c_tof = 0.25)")
     if "c_tof_exponent" in results:
         lines.append("")
         lines.append(f"c_tof ∝ p^x with x = {results['c_tof_exponent']:.4f} (paper: 1/6 = 0.1667)")

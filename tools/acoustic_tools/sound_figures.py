@@ -40,7 +40,7 @@ def fig4_signals(signals, mean_signal, path, title):
     ax.plot(t, mean, color="C0", lw=1.5, label="ensemble mean")
     ax.plot(t, rms, color="C3", lw=1.0, label="RMS deviation")
     ax.axhline(0.0, color="k", lw=0.5)
-    ax.set_xlabel("t")
+    ax.set_xlabel(r"$t\ /\ d\sqrt{\rho/E^*}$")
     ax.set_ylabel(r"$F_{sig}$ (unit pulse)")
     ax.set_title(title)
     ax.legend(frameon=False)
@@ -54,13 +54,15 @@ def fig6_arrival_times(heights, t10, t_peak, t_zero, path, title):
     ax.plot(heights, t10, "^", label="10 % of the peak")
     ax.plot(heights, t_peak, "o", mfc="none", label="peak")
     ax.plot(heights, t_zero, "s", label="first zero crossing")
-    slope, intercept = np.polyfit(heights, t10, 1)
+    fit = sound.arrival_fit(heights, t10)
     x = np.linspace(0.0, max(heights) * 1.05, 10)
-    ax.plot(x, slope * x + intercept, "k--", lw=0.8, label=f"$c_{{tof}}$ = {1.0 / slope:.3f}")
-    ax.set_xlabel("source-detector distance L")
-    ax.set_ylabel("arrival time")
+    ax.plot(x, x / fit["speed"] + fit["intercept"], "k--", lw=0.8,
+            label=f"fit of the 10 % arrivals on L = {fit['L_min']:.0f}–{fit['L_max']:.0f}: "
+                  f"1/slope = {fit['speed']:.3f}")
+    ax.set_xlabel(r"source-detector distance $L\ /\ d$")
+    ax.set_ylabel(r"arrival time $/\ d\sqrt{\rho/E^*}$")
     ax.set_title(title)
-    ax.legend(frameon=False)
+    ax.legend(frameon=False, fontsize=8)
     _save(fig, path)
 
 
@@ -70,7 +72,7 @@ def fig7_exponents(curves, path):
     (L, A, W) or (L, A, W, A_se, W_se), the means of A and W with their
     standard errors (error bars: sound.effective_exponents_se); the paper's
     values of Table III as grey lines"""
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(6.0, 6.5), sharex=True)
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(9.5, 6.5), sharex=True)
     markers = "os^vDp<>h"
     for k, (label, curve) in enumerate(curves.items()):
         length, amplitude, width = curve[:3]
@@ -90,9 +92,10 @@ def fig7_exponents(curves, path):
     bottom.set_ylabel(r"$\alpha_{eff} = d\,\log W / d\,\log L$")
     bottom.set_xlabel("L (balls, rows or d)")
     top.set_xscale("log")
-    top.legend(frameon=False, fontsize=6.5)
+    top.legend(frameon=False, fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0))
     bottom.set_title("W: first zero crossing − 10 % arrival", fontsize=8)
-    _save(fig, path)
+    fig.subplots_adjust(left=0.09, right=0.6, bottom=0.08, top=0.97, hspace=0.15)    # the legend to the right
+    _save(fig, path, tight=False)
 
 
 def fig8_speeds(pressure, c_tof, c_tof_err, c_l, c_t, path, lattice=None):
@@ -168,7 +171,7 @@ def fig5_heights(signals, path, title):
         ax.plot(t, f, color=f"C{k}", lw=1.3, label=label)
     ax.set_xlim(0.0, end)
     ax.axhline(0.0, color="k", lw=0.5)
-    ax.set_xlabel("t")
+    ax.set_xlabel(r"$t\ /\ d\sqrt{\rho/E^*}$")
     ax.set_ylabel(r"$F_{sig}$ (unit pulse)")
     ax.set_title(title, fontsize=9)
     ax.legend(frameon=False, fontsize=8)
@@ -340,9 +343,9 @@ def fig2_directions(histogram, path, title):
         ax.set_ylim(0.0, top)
         ax.set_yticklabels([])
         ax.set_title(f"{name} contacts ({h['count']})\n" + r"$F_2 = \langle n_y^2\rangle$" + f" = {h['F2']:.3f}",
-                     fontsize=9)
-    fig.suptitle(title, fontsize=9)
-    _save(fig, path, dpi=80, colours=32)
+                     fontsize=11)
+    fig.suptitle(title, fontsize=11)
+    _save(fig, path, dpi=110, colours=32)
 
 
 def _arrows(ax, x, y, u, v, magnification):
@@ -427,7 +430,7 @@ def fig11_damping(signals, path, title):
     for k, (zeta, (t, f)) in enumerate(sorted(signals.items())):
         ax.plot(t, f, color=f"C{k}", lw=0.9, label=f"{zeta:g} of critical")
     ax.axhline(0.0, color="k", lw=0.5)
-    ax.set_xlabel("t")
+    ax.set_xlabel(r"$t\ /\ d\sqrt{\rho/E^*}$")
     ax.set_ylabel(r"$F_{sig}$ (unit pulse)")
     ax.set_title(title, fontsize=9)
     ax.legend(frameon=False, fontsize=8)

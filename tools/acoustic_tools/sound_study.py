@@ -1,9 +1,10 @@
 """The command line of examples/sound (paper 003): examples/sound/study.py.
 
   run       the samples (in.sound: packing, pulse, moduli), one job per
-            directory OUT/p<p>_H<H>_s<seed>[_m<mass>][_v<speed>]/, N at a
+            directory OUT/p<p>_H<H>_s<seed>[_m<mass>][_v<speed>][_mu<mu>]/, N at a
             time, each skipped when its result.json is there (a job stopped
-            half-way runs again); with --chain, the 1D chain (in.chain) into
+            half-way runs again); --mu 0: frictionless packings (in.packing's
+            mu; in.measure then uses the frictionless network); with --chain, the 1D chain (in.chain) into
             OUT/chain/, with --chain-poly W..., polydisperse chains into
             OUT/chain_poly<W>/; with --lattice P... and --lattice-series
             P..., perfect triangular lattices (in.lattice) into
@@ -44,7 +45,9 @@ LATTICE_ROWS = (9, 29)                    # walls 7.9 and 25.2 apart: the packin
 LATTICE_SERIES_ROWS = (8, 16, 32, 64, 128, 256)
 LATTICE_SERIES_WIDTH = 4                  # the pulse is uniform along x: 4 balls per row suffice
 DEFAULT_MASS, DEFAULT_SPEED = "1", "0.001"
-# the variables of in.sound that a sample's job.json sets
+DEFAULT_MU = "0.5"                        # in.packing's friction coefficient (paper 003's)
+# the variables of in.sound that a sample's job.json sets (mu: only when it
+# is not the default, so that the command of a frictional sample stays as it was)
 SAMPLE_VARIABLES = ("p", "W", "D", "H", "seed", "piston_mass", "piston_speed")
 
 
@@ -55,27 +58,31 @@ def _number(text):
     return int(value) if value.is_integer() and re.fullmatch(r"[+-]?[0-9]+", str(text).strip()) else value
 
 
-def sample_name(p, H, seed, piston_mass=DEFAULT_MASS, piston_speed=DEFAULT_SPEED):
+def sample_name(p, H, seed, piston_mass=DEFAULT_MASS, piston_speed=DEFAULT_SPEED, mu=DEFAULT_MU):
     """The directory name of a sample (texts as given on the command line):
     p<p>_H<H>_s<seed>, with _m<mass> and _v<speed> for another piston than
-    the default"""
+    the default and _mu<mu> for another friction coefficient (p1e-4_H25_s1_mu0)"""
     name = f"p{p}_H{H}_s{seed}"
     if str(piston_mass) != DEFAULT_MASS:
         name += f"_m{piston_mass}"
     if str(piston_speed) != DEFAULT_SPEED:
         name += f"_v{piston_speed}"
+    if float(mu) != float(DEFAULT_MU):
+        name += f"_mu{mu}"
     return name
 
 
 def sample_settings(p, H, seed, width=24, depth=0, piston_mass=DEFAULT_MASS, piston_speed=DEFAULT_SPEED,
-                    extra=()):
+                    extra=(), mu=DEFAULT_MU):
     """The job.json of a sample: kind "sample", the pressure (p), the target
     height (H), the seed, the width (W), the depth (D, 0: 2D), the piston's
-    mass (in units of the grains') and dashpot speed, and any other variable
-    of in.sound given as (name, text) pairs in extra ("variables")"""
+    mass (in units of the grains') and dashpot speed, the friction
+    coefficient mu of the preparation (0: a frictionless packing, measured
+    on its frictionless network), and any other variable of in.sound given
+    as (name, text) pairs in extra ("variables")"""
     settings = {"kind": "sample", "deck": "in.sound", "p": float(p), "H": int(H), "seed": int(seed),
                 "W": _number(width), "D": _number(depth), "piston_mass": _number(piston_mass),
-                "piston_speed": _number(piston_speed)}
+                "piston_speed": _number(piston_speed), "mu": _number(mu)}
     if extra:
         settings["variables"] = {name: value for name, value in extra}
     return settings
@@ -104,6 +111,8 @@ def sample_command(lmp, here, directory, settings, texts):
     command = [lmp, "-in", os.path.join(here, "in.sound"), "-var", "here", here]
     for name in SAMPLE_VARIABLES:
         command += ["-var", name, _deck_text(settings, name, texts)]
+    if "mu" in settings and float(settings["mu"]) != float(DEFAULT_MU):
+        command += ["-var", "mu", _deck_text(settings, "mu", texts)]
     for name, value in settings.get("variables", {}).items():
         command += ["-var", name] + str(value).split()
     return command + ["-var", "dir", directory, "-log", os.path.join(directory, "log.lammps"),
@@ -194,14 +203,15 @@ def run(args):
     for p in [] if args.no_samples else args.pressures:
         for H in args.heights:
             for seed in args.seeds:
-                directory = os.path.join(out, sample_name(p, H, seed, args.piston_mass, args.piston_speed))
+                directory = os.path.join(out, sample_name(p, H, seed, args.piston_mass, args.piston_speed, args.mu))
                 if study.read_result(directory) is not None:
                     continue
                 settings = sample_settings(p, H, seed, args.width, args.depth, args.piston_mass,
-                                           args.piston_speed, args.var or ())
+                                           args.piston_speed, args.var or (), args.mu)
                 texts = {"p": p, "W": args.width, "D": args.depth, "piston_mass": args.piston_mass,
-                         "piston_speed": args.piston_speed}
-                jobs.append((f"p={p} H={H} seed={seed}", directory, settings,
+                         "piston_speed": args.piston_speed, "mu": args.mu}
+                friction = "" if float(args.mu) == float(DEFAULT_MU) else f" mu={args.mu}"
+                jobs.append((f"p={p} H={H} seed={seed}{friction}", directory, settings,
                              sample_command(lmp, here, directory, settings, texts)))
     chains = [chain_settings(args.chain_sizes)] if args.chain else []
     chains += [chain_settings(args.chain_poly_sizes, w, args.chain_realizations) for w in args.chain_poly or ()]
@@ -414,6 +424,9 @@ def main(here, argv=None):
                             help="the piston's mass / the grains' (1; others go to ..._m<mass>)")
         parser.add_argument("--piston-speed", default=DEFAULT_SPEED,
                             help="terminal speed of the piston's dashpot, 0: free (0.001; others go to ..._v<speed>)")
+        parser.add_argument("--mu", default=DEFAULT_MU,
+                            help="friction coefficient of the contacts (0.5, the paper's; others go to ..._mu<mu>); "
+                                 "0: frictionless packings, measured on the frictionless network (model normal)")
         parser.add_argument("--var", nargs=2, action="append", metavar=("NAME", "VALUE"),
                             help="another variable of in.sound (recorded in job.json), e.g. --var max_checks 8000")
         parser.add_argument("--no-samples", action="store_true",

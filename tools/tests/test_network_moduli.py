@@ -100,3 +100,19 @@ def test_linear_and_blind_to_rattlers():
     moduli = network_moduli.network_moduli(with_rattler, contacts, width, height)
     assert moduli["C22"] == pytest.approx(small["C22"], rel=1e-9)
     assert moduli["C33"] == pytest.approx(small["C33"], rel=1e-9)
+
+
+def test_normal_model_is_the_frictionless_network():
+    # model "normal" (a packing of mu = 0): normal springs on the translations,
+    # whatever eta says; the lattice's C22 = (3 sqrt(3) / 4) k and no shear
+    k = 2.0
+    (grains, contacts), width, height, span = triangular_lattice(4, 30, k, 1e9 * k)
+    normal = network_moduli.network_moduli(grains, contacts, width, height, eta=1.0, model="normal")
+    assert normal["C22"] * span / height == pytest.approx(3.0 * math.sqrt(3.0) / 4.0 * k, rel=1e-5)
+    assert normal["C33"] == 0.0
+    assert normal["C22"] == pytest.approx(
+        network_moduli.network_moduli(grains, contacts, width, height, eta=0.0)["C22"], rel=1e-9)
+    B, springs, _ = network_moduli.compatibility(grains, contacts, width, height, model="normal")
+    assert B.shape[1] == 2 * len(grains["id"]) and not np.any(springs[1::2])
+    with pytest.raises(ValueError):
+        network_moduli.network_moduli(grains, contacts, width, height, model="tangential")

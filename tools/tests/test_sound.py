@@ -47,6 +47,14 @@ def test_time_of_flight_and_power_laws():
     assert mid[0] == pytest.approx(math.sqrt(96.0))
 
 
+def test_arrival_fit_of_points_on_a_line():
+    """Fig. 6's fit: arrivals t = L / 0.25 + 3 give back c = 0.25, t0 = 3 and the range of L"""
+    distance = np.array([8.0, 8.2, 12.0, 25.0, 50.5])
+    fit = sound.arrival_fit(distance, distance / 0.25 + 3.0)
+    assert fit["speed"] == pytest.approx(0.25, rel=1e-12) and fit["intercept"] == pytest.approx(3.0, rel=1e-12)
+    assert (fit["L_min"], fit["L_max"], fit["samples"]) == (8.0, 50.5, 5)
+
+
 def test_ensemble_mean_and_rms():
     t = np.linspace(0.0, 10.0, 101)
     base = np.sin(t)
@@ -179,3 +187,20 @@ def test_packing_figures_are_readable(tmp_path):
     assert widths[paths[2]] == pytest.approx(sound_figures.PAGE * dpi, abs=2)
     assert sound_figures.PRINT_TYPE >= 10 and all(v == sound_figures.PRINT_TYPE
                                                   for v in sound_figures.PRINT_STYLE.values())
+
+
+def test_c33_candidates_read_the_lines_where_asked():
+    """C33 = 0.01 (z* - 3) over five H = 25 packings: the line in z* read at
+    the paper's z* gives back the law there; the smallest overshoot is found;
+    a packing of another height is left out"""
+    from acoustic_tools import sound_collect
+    z = [3.40, 3.45, 3.50, 3.55, 3.60]
+    overshoot = [1.2, 1.1, 1.05, 1.1, 1.2]
+    per_sample = {(1e-4, 25, k): {"z_star": zk, "overshoot": o, "C33": 0.01 * (zk - 3.0)}
+                  for k, (zk, o) in enumerate(zip(z, overshoot))}
+    per_sample[(1e-4, 8, 0)] = {"z_star": 9.0, "overshoot": 1.0, "C33": 1.0}
+    c = sound_collect.c33_candidates(per_sample, [1e-4])[1e-4]
+    paper_z = sound.PAPER_TABLE_I[1e-4]["z_star"][0]
+    assert c["samples"] == 5 and c["slope_z"] == pytest.approx(0.01, rel=1e-9)
+    assert c["C33_at_paper_z"] == pytest.approx(0.01 * (paper_z - 3.0), rel=1e-9)
+    assert c["least_overshoot"] == pytest.approx(1.05) and c["paper"] == 4.0e-3
