@@ -184,6 +184,13 @@ void AcousticLiggghtsNetwork::gather_words(const std::vector<double> &mine,
 void AcousticLiggghtsNetwork::gather(int groupbit, int flagbit,
                                      Acoustic::FacadeContactModel::Value model, Gathered &out)
 {
+  gather(groupbit, std::vector<int>(1, flagbit), model, out);
+}
+
+void AcousticLiggghtsNetwork::gather(int groupbit, const std::vector<int> &flagbits,
+                                     Acoustic::FacadeContactModel::Value model, Gathered &out)
+{
+  if (flagbits.size() > 8) error_all("at most 8 flag groups");
   int *tag = atom->tag;
   int *mask = atom->mask;
   std::vector<double> grain_words, contact_words;
@@ -192,7 +199,10 @@ void AcousticLiggghtsNetwork::gather(int groupbit, int flagbit,
     grain_words.push_back(tag[i]);
     grain_words.push_back(atom->rmass[i]);
     grain_words.push_back(atom->radius[i]);
-    grain_words.push_back((mask[i] & flagbit) ? 1.0 : 0.0);
+    int flags = 0;
+    for (size_t k = 0; k < flagbits.size(); k++)
+      if (mask[i] & flagbits[k]) flags |= 1 << k;
+    grain_words.push_back(flags);
   }
   for (size_t k = 0; k < contacts_.size(); k++) {
     const Contact &c = contacts_[k];
@@ -225,7 +235,7 @@ void AcousticLiggghtsNetwork::gather(int groupbit, int flagbit,
   for (int g = 0; g < ng; g++) {
     const double *w = &all_grains[GRAIN_WORDS * order[g].second];
     out.tags[g] = w[0];
-    out.flag[g] = w[3] != 0.0;
+    out.flag[g] = static_cast<char>(static_cast<int>(w[3]));
     out.input.grains.push_back(Acoustic::GatheredGrain(w[1], w[2]));
   }
   const int nc = static_cast<int>(all_contacts.size()) / CONTACT_WORDS;

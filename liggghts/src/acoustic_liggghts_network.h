@@ -77,7 +77,7 @@ class AcousticLiggghtsNetwork : protected Pointers {
   // the network on rank 0 (empty on the other ranks)
   struct Gathered {
     std::vector<double> tags;             // atom ID of grain g, ascending
-    std::vector<char> flag;               // grain g is in the flag group
+    std::vector<char> flag;               // grain g is in the flag group (bit k: flag group k)
     Acoustic::GatheredDriveInput input;   // grains and contacts; no drive, nothing prescribed
   };
 
@@ -100,6 +100,10 @@ class AcousticLiggghtsNetwork : protected Pointers {
   // input.dimension and input.model, the drive is left to the caller
   void gather(int groupbit, int flagbit, Acoustic::FacadeContactModel::Value model,
               Gathered &out);
+  // the same with up to 8 flag groups: bit k of flag[g] is set for the
+  // grains in flagbits[k]'s group (the computes' source, detector, fixed)
+  void gather(int groupbit, const std::vector<int> &flagbits,
+              Acoustic::FacadeContactModel::Value model, Gathered &out);
 
   // rank 0's tags and q (2 ndof values per grain) to every rank
   void broadcast(std::vector<double> &tags, std::vector<double> &q, int ndof);
