@@ -127,13 +127,15 @@ void AcousticLiggghtsNetwork::collect(int groupbit)
       const double radsum = radius[i] + radius[j];
       if (rsq >= radsum * radsum) continue;
       const double r = sqrt(rsq);
-      const double rinv = 1.0 / r;
       Contact c;
       c.i = i;
       c.j = j;
-      c.n[0] = delx * rinv;
-      c.n[1] = dely * rinv;
-      c.n[2] = delz * rinv;
+      // divided by r, as the LAMMPS walker (GranularContactWalker::linearise):
+      // multiplied by 1/r, a normal differs in its last bit, and the softest
+      // modes of a network amplify that by (f_max / f)^2
+      c.n[0] = delx / r;
+      c.n[1] = dely / r;
+      c.n[2] = delz / r;
       // the elastic normal force of LIGGGHTS's hertz (normal_model_hertz.h)
       const double deltan = radsum - r;
       const double reff = radius[i] * radius[j] / (radius[i] + radius[j]);
