@@ -445,7 +445,8 @@ def usable_samples(out, mu=DEFAULT_MU):
     pressure within 5 % of the target, and those not at rest"""
     jobs = samples(out, mu=mu)
     found = {key: directory for key, (directory, _) in jobs.items()}
-    per_sample = {key: sample_results(directory, result, network_model(mu)) for key, (directory, result) in jobs.items()}
+    model = network_model(mu)
+    per_sample = {key: sample_results(directory, result, model) for key, (directory, result) in jobs.items()}
     off_target = sorted(os.path.basename(found[key]) for key, r in per_sample.items()
                         if abs(r["p"] / key[0] - 1.0) > 0.05)
     not_at_rest = sorted(os.path.basename(found[key]) for key, r in per_sample.items() if not r["at_rest"])
