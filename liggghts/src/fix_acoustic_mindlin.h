@@ -29,6 +29,7 @@ FixStyle(acoustic/mindlin,FixAcousticMindlin)
 #define LMP_FIX_ACOUSTIC_MINDLIN_H
 
 #include "fix.h"
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -46,6 +47,9 @@ class FixAcousticMindlin : public Fix {
 
  private:
   int source_group, source_groupbit;
+  std::string source_wall_id;   // source wall <fix-ID> or source mesh <fix-ID>, else empty
+  int source_wall;              // its index in the network's walls, or -1
+  bool source_is_mesh;
   double frequency, amplitude;
   double direction[3];
   bool direction_given;
