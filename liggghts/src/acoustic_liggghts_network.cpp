@@ -13,6 +13,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix.h"
 #include "fix_contact_history_mesh.h"
 #include "fix_mesh_surface.h"
 #include "fix_neighlist_mesh.h"
@@ -303,6 +304,28 @@ void AcousticLiggghtsNetwork::add_wall_contact(int i, int w, const double *delta
   contacts_.push_back(c);
 }
 
+/* ----------------------------------------------------------------------
+   On the first run after a wall fix was defined, Modify::setup sets every
+   just-created per-atom fix to its defaults (FixPropertyAtom: the initial
+   values, zero; FixContactHistory: no partner), after the setup_pre_force
+   in which the walk writes into them: a primitive wall's factors would be
+   lost, a mesh tracker's partner counts zeroed under its partners (which
+   LIGGGHTS's own compute wall/gran/local then trips over).  Do that
+   initialisation now instead, under the same condition: Modify::setup then
+   finds nothing left to do but clear the flags, as it would have, and the
+   arrays hold what they would have held before any contact was written.
+------------------------------------------------------------------------- */
+
+void AcousticLiggghtsNetwork::settle_just_created(Fix *fix)
+{
+  if (fix->recent_restart || !fix->just_created || !fix->create_attribute) return;
+  fix->just_created = 0;
+  fix->pre_set_arrays();
+  int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & fix->groupbit) fix->set_arrays(i);
+}
+
 // a primitive wall: FixWallGran::post_force_primitive's contacts
 void AcousticLiggghtsNetwork::collect_primitive(int groupbit, int w)
 {
@@ -316,18 +339,7 @@ void AcousticLiggghtsNetwork::collect_primitive(int groupbit, int w)
     if (!hist || !hist->array_atom)
       error_all("fix %s (wall/gran) has no per-atom contact history (fix %s)", fix->id,
                 name.c_str());
-    // On the first run after the wall fix was defined, Modify::setup sets
-    // every just-created per-atom fix to its defaults (zero), after the
-    // setup_pre_force in which the factors are written: the wall contacts
-    // would start at s = 1.  Do that initialisation now instead, under the
-    // same condition, so that Modify::setup finds nothing left to do (it
-    // then only clears the flags, as it would have).
-    if (need_factor_ && !hist->recent_restart && hist->just_created && hist->create_attribute) {
-      hist->just_created = 0;
-      hist->pre_set_arrays();
-      for (int i = 0; i < atom->nlocal; i++)
-        if (atom->mask[i] & hist->groupbit) hist->set_arrays(i);
-    }
+    if (need_factor_) settle_just_created(hist);
     history = hist->array_atom;
   }
   double **x = atom->x;
@@ -363,7 +375,10 @@ void AcousticLiggghtsNetwork::collect_mesh(int groupbit, int w)
   // read-only: the triangles taken so far for each atom, and whether by a face
   std::vector<std::vector<std::pair<int, bool> > > taken;
   if (!with_history && tracker) taken.resize(nlocal);
-  if (with_history) tracker->markAllContacts();
+  if (with_history) {
+    settle_just_created(tracker);
+    tracker->markAllContacts();
+  }
   const int ntri = mesh->sizeLocal() + mesh->sizeGhost();
   for (int iTri = 0; iTri < ntri; iTri++) {
     const std::vector<int> &neighbors = nlist->get_contact_list(iTri);

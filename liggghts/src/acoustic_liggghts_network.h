@@ -176,6 +176,7 @@ class AcousticLiggghtsNetwork : protected Pointers {
 
   void error_all(const char *fmt, ...);
   void init_walls(int caller_fix);
+  void settle_just_created(class Fix *fix);
   void collect_primitive(int groupbit, int w);
   void collect_mesh(int groupbit, int w);
   void add_wall_contact(int i, int w, const double *delta, double overlap, int wall_type,
