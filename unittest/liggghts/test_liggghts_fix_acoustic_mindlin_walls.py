@@ -8,10 +8,13 @@ STL meshes of fix wall/gran as network nodes of infinite mass).
    independently here (numpy: the 15 x 15 system (K - w^2 M) u = b of the
    normal springs, F_n and k_n from the Hertz formulas and the geometry), and
    every contact's F_n, k_n, U_t and s (the wall contact included) agree with
-   the fix's local rows to 1e-8 relative; the wall's history holds 1 - s.
-2. Restart: write_restart after a run with the fix (primitive floor), a new
-   run reads it; the pair and the wall contact histories hold the factors of
-   the first run, bit for bit, before the fix runs again.
+   the fix's local rows to 1e-8 relative; the wall's history holds 1 - s
+   (the mesh's: one contact, through compute wall/gran/local).
+2. Restart: write_restart after a run of 20 steps with the fix (primitive
+   floor, and mesh floor), a new run without the fix reads it; the pair and
+   the wall contact histories (the primitive wall's per-atom history, the
+   mesh's contact tracker through compute wall/gran/local) hold the factors
+   of the first run, bit for bit.
 3. Bad inputs (unknown wall or mesh ID, a mesh source without direction, a
    wall given as mesh, ...) stop LIGGGHTS with an ERROR line naming the
    problem, on 1 and 2 ranks.
@@ -106,6 +109,14 @@ MESH = ("fix stl all mesh/surface file floor.stl type 1\n"
         "meshes stl")
 FIX = ("fix us all acoustic/mindlin 1 frequency {f} amplitude {U0} source {source} "
        "stiffness hertz {E} {NU} model normal {extra}")
+# the mesh's contact histories: compute wall/gran/local (last column 1 - s);
+# with the fix on the first run it also checks that the mesh's contact
+# tracker stays consistent (it crashed when its partner counts were reset
+# under the partners the fix had registered)
+MESH_HISTORY = ("compute wgl all wall/gran/local id history\n"
+                "dump m all local 1 mesh.history c_wgl[1] c_wgl[2] c_wgl[3] c_wgl[4] c_wgl[5] "
+                "c_wgl[6] c_wgl[7]\n"
+                "dump_modify m format \"%.17g %.17g %.17g %.17g %.17g %.17g %.17g\"")
 # the primitive wall's history: a per-atom fix property/atom (last value 1 - s)
 WALL_HISTORY = ("dump w all custom 1 wall.history id f_history_floor[1] f_history_floor[2] "
                 "f_history_floor[3] f_history_floor[4]\n"
@@ -179,6 +190,13 @@ def atom_rows(path):
     return {int(l.split()[0]): [float(t) for t in l.split()[1:]] for l in body if l.strip()}
 
 
+def mesh_rows(path):
+    """the last snapshot of the mesh's dump local, a list of rows"""
+    with open(path) as f:
+        body = f.read().split("ITEM: ENTRIES")[-1].split("\n")[1:]
+    return [[float(t) for t in l.split()] for l in body if l.strip()]
+
+
 def relative(x, y):
     if x == y:
         return 0.0
@@ -244,7 +262,7 @@ def test_column_exact(tmp_path, lig, floor):
     if floor == "primitive":
         walls, source = PRIMITIVE + "\n" + WALL_HISTORY, "wall floor"
     else:
-        walls, source = MESH, "mesh stl"
+        walls, source = MESH + "\n" + MESH_HISTORY, "mesh stl"
     extra = "direction %g %g %g" % direction
     run(lig, str(tmp_path), deck(walls, source, extra))
     got = local_rows(str(tmp_path / "fix.contacts"), 6)
@@ -267,6 +285,11 @@ def test_column_exact(tmp_path, lig, floor):
         wall = atom_rows(str(tmp_path / "wall.history"))
         assert wall[1][3] == 1.0 - got[(0, 1)][5]
         assert all(wall[i][3] == 0.0 for i in range(2, N + 1))
+    else:
+        mesh = mesh_rows(str(tmp_path / "mesh.history"))
+        # one contact with the mesh (the grain is on one triangle's face)
+        assert len(mesh) == 1, mesh
+        assert mesh[0][6] == 1.0 - got[(0, 1)][5]
 
 
 def test_clamped_walls(tmp_path, lig):
@@ -283,18 +306,25 @@ def test_clamped_walls(tmp_path, lig):
 # --------------------------------------------------------------------------
 # 2. restart of the factors
 
-def test_restart(tmp_path, lig):
-    first = deck(PRIMITIVE + "\n" + WALL_HISTORY, "wall floor", "direction 0.3 0 1",
+@pytest.mark.parametrize("floor", ["primitive", "mesh"])
+def test_restart(tmp_path, lig, floor):
+    if floor == "primitive":
+        walls, source = PRIMITIVE + "\n" + WALL_HISTORY, "wall floor"
+    else:
+        walls, source = MESH + "\n" + MESH_HISTORY, "mesh stl"
+    first = deck(walls, source, "direction 0.3 0 1",
                  after="fix integr all nve/sphere\nrun 20\nwrite_restart state.restart")
     run(lig, str(tmp_path), first)
     factors = local_rows(str(tmp_path / "pair.history"), 7)
-    wall = atom_rows(str(tmp_path / "wall.history"))
     assert min(row[6] for row in factors.values()) > 0.0
-    assert wall[1][3] > 0.0
+    if floor == "primitive":
+        wall = atom_rows(str(tmp_path / "wall.history"))
+        assert wall[1][3] > 0.0
+    else:
+        wall = mesh_rows(str(tmp_path / "mesh.history"))
+        assert len(wall) == 1 and wall[0][6] > 0.0
     # a new run from the restart file, without the fix: the histories as they were
-    second = deck(PRIMITIVE + "\n" + WALL_HISTORY, None, fix="",
-                  read="read_restart state.restart",
-                  after="run 0")
+    second = deck(walls, None, fix="", read="read_restart state.restart", after="run 0")
     second = "\n".join(l for l in second.split("\n")
                        if "f_us" not in l and not l.startswith("dump_modify c "))
     d2 = tmp_path / "second"
@@ -302,12 +332,14 @@ def test_restart(tmp_path, lig):
     shutil.copy(str(tmp_path / "state.restart"), str(d2 / "state.restart"))
     run(lig, str(d2), second)
     again = local_rows(str(d2 / "pair.history"), 7)
-    wall2 = atom_rows(str(d2 / "wall.history"))
     assert sorted(again) == sorted(factors)
     for k in factors:
         assert again[k][6] == factors[k][6], k
-    for i in wall:
-        assert wall2[i] == wall[i], i
+    if floor == "primitive":
+        wall2 = atom_rows(str(d2 / "wall.history"))
+    else:
+        wall2 = mesh_rows(str(d2 / "mesh.history"))
+    assert wall2 == wall
 
 
 # --------------------------------------------------------------------------
@@ -338,3 +370,14 @@ def test_bad_input(tmp_path, lig, name, walls, source, extra, message, nranks):
     assert errors, proc.stdout[-2000:]
     assert "fix acoustic/mindlin" in errors[0], errors[0]
     assert message in errors[0], errors[0]
+
+
+def test_fix_before_mesh_wall(tmp_path, lig):
+    """the mesh's neighbor list and tracker must be updated before the fix"""
+    fix = FIX.format(f=F, U0=U0, source="mesh stl", E=E, NU=NU, extra="direction 0 0 1")
+    text = deck("", None, fix=fix).replace(fix, "fix stl all mesh/surface file floor.stl type 1\n"
+                                           + fix + "\n" + MESH.split("\n")[1])
+    proc = run(lig, str(tmp_path), text, expect_error=True)
+    errors = [line for line in proc.stdout.split("\n") if line.startswith("ERROR")]
+    assert errors, proc.stdout[-2000:]
+    assert "define it after fix floor" in errors[0], errors[0]
