@@ -639,3 +639,41 @@ def mean_blocks(blocks, first_step=None):
     if not blocks:
         raise ValueError("no block to average")
     return {name: np.mean([cols[name] for _, cols in blocks], axis=0) for name in blocks[0][1]}
+
+
+# ---------------------------------------------------------------------------
+# where the drive falls in the vibration network's spectrum
+
+def read_modes_histogram(path):
+    """The last histogram of in.cavity's TAG.modes.hist (fix ave/time mode
+    vector of compute vibration/modes's bins): (bin centres (Hz), density)"""
+    rows, block = [], []
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        words = line.split()
+        if len(words) == 2:
+            block = []
+            rows.append(block)
+        else:
+            block.append((float(words[1]), float(words[2])))
+    if not rows or not rows[-1]:
+        raise ValueError(f"no histogram in {path}")
+    data = np.array(rows[-1])
+    return data[:, 0], data[:, 1]
+
+
+def spectrum_position(centres, density, freq, top=0.999):
+    """Where freq falls in a density of states on equal bins (centres,
+    density normalised over the bins): (the fraction of the modes below
+    freq, the frequency below which the fraction `top` of them lie), both
+    linearly interpolated in the cumulative distribution"""
+    centres = np.asarray(centres, float)
+    density = np.clip(np.asarray(density, float), 0.0, None)
+    width = np.diff(centres).mean() if len(centres) > 1 else 1.0
+    edges = np.concatenate([[centres[0] - 0.5 * width], centres + 0.5 * width])
+    cumulative = np.concatenate([[0.0], np.cumsum(density * width)])
+    cumulative /= cumulative[-1]
+    below = float(np.interp(freq, edges, cumulative))
+    band = float(np.interp(top, cumulative, edges))
+    return below, band

@@ -131,6 +131,14 @@ def analyse(run, settings, p):
         r[f"fit_{scale}"] = [fit["mu"], fit["sigma"], fit["f0"]]
     high = _modes(run)
     r["highest_mode"] = np.nan if high is None else high
+    # where the drive falls in the network's spectrum (TAG.modes.hist, dense or kpm)
+    r["modes_below_drive"], r["band_top"] = np.nan, np.nan
+    hist = os.path.join(run, f"{tag}.modes.hist")
+    if os.path.exists(hist) and p["freq"] > 0:
+        try:
+            r["modes_below_drive"], r["band_top"] = cavity.spectrum_position(*cavity.read_modes_histogram(hist), p["freq"])
+        except ValueError:
+            pass
     us = os.path.join(run, f"{tag}.us.txt")
     if os.path.exists(us):
         u = lammps_output.read_ave_time(us)
@@ -322,8 +330,8 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
         print("\nUltrasound at N_P = 1, H/d = 30 (h30us; mean ± standard error over the packings; the drive "
               "against the network's highest mode at the end of each run):\n")
         print("| N_U | I_M | f (kHz) | runs | F/(PLd) | ⟨Δt_c⟩ (d/U) | CV of F | Eq. 7 wall σ | highest mode (kHz) "
-              "| f / highest mode | mean μ*/μ |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|")
+              "| f / highest mode | modes below f | 99.9 % of the modes below (kHz) | mean μ*/μ |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         groups = {}
         for name, (r, _) in us30.items():
             groups.setdefault((r["NU"], r["freq"]), []).append(r)
@@ -333,7 +341,9 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
             print(f"| {NU:g} | {rows[0]['I_M']:.3g} | {freq / 1e3:g} | {len(rows)} | {_pm(_mean_sem([x['Fnorm'] for x in rows]))} "
                   f"| {_pm(_mean_sem([x['dtc_mean_dU'] for x in rows]), 2)} | {_pm(_mean_sem([x['cv_wall'] for x in rows]), 2)} "
                   f"| {_pm(_mean_sem([x['eq7_wall']['sigma'] for x in rows]), 2)} | {_pm(high, 3)} "
-                  f"| {'—' if freq == 0 else _pm(ratio, 2)} | {_pm(_mean_sem([x.get('mu_ratio', np.nan) for x in rows]), 3)} |")
+                  f"| {'—' if freq == 0 else _pm(ratio, 2)} | {_pm(_mean_sem([x['modes_below_drive'] for x in rows]), 3)} "
+                  f"| {_pm(_mean_sem([x['band_top'] / 1e3 for x in rows]), 3)} "
+                  f"| {_pm(_mean_sem([x.get('mu_ratio', np.nan) for x in rows]), 3)} |")
     if mu_fit is not None:
         (m1, m2, i0), (e1, e2, ei), n = mu_fit
         print(f"\nEq. 20 fit of the local μ(I) over the region of Fig. 19 of the runs with a stress field ({n} bins): "

@@ -327,11 +327,13 @@ def cut_after(directory, tag, step=None, nskip=None):
     tidy_dump(os.path.join(directory, f"{tag}.contacts"), upto=step)
 
 
-def run_job(lmp, here, directory, settings, ranks=1, piece_seconds=0, max_pieces=None, say=None):
+def run_job(lmp, here, directory, settings, ranks=1, piece_seconds=0, max_pieces=None, say=None, deadline=None):
     """Write job.json and run one cavity in directory, piece after piece
     (each LAMMPS process stops at the first restart point after
     piece_seconds of wall time; 0: one process), at most max_pieces
-    processes in this call; the line to print"""
+    processes in this call and none started after the time deadline (s
+    since the epoch; a piece then stops at the first restart point after
+    it); the line to print"""
     study.write_job(directory, settings)
     environment = dict(os.environ)
     if os.geteuid() == 0:
@@ -345,7 +347,14 @@ def run_job(lmp, here, directory, settings, ranks=1, piece_seconds=0, max_pieces
             where = f"step {resume[0]}" if resume else "the start"
             return f"{label}: paused after {pieces} piece(s) at {where}; repeat the command to go on"
         resume = read_resume(directory, tag)
-        extra = {"tpiece": piece_seconds}
+        budget = piece_seconds
+        if deadline is not None:
+            left = deadline - time.time()
+            if left <= 0:
+                where = f"step {resume[0]}" if resume else "the start"
+                return f"{label}: paused at {where} (the call's --hours are over); repeat the command to go on"
+            budget = max(60.0, left) if not budget else max(60.0, min(budget, left))
+        extra = {"tpiece": budget}
         if resume is not None and os.path.exists(os.path.join(directory, "log.lammps")):
             step, restart, carry, nskip = resume
             cut_after(directory, tag, step, nskip)
@@ -393,24 +402,33 @@ def steps(settings):
     return deposit + compress, settings["strain"] * hu_seconds(NU, Hd) / dt
 
 
-def cost_hours(settings, atom_steps_per_s, us_factor=1.0):
+def solve_interval(settings):
+    """in.cavity's steps between two vibration solves (nus)"""
+    dt = time_step(settings["NP"], settings["Hd"])
+    period = D / (settings["NU"] * math.sqrt(G * D))
+    nevery = max(1, round(period / settings["nrec"] / dt))
+    return nevery * max(1, round(0.1 * period / dt / nevery))
+
+
+def cost_hours(settings, atom_steps_per_s, solve_steps=None):
     """estimated hours of one job on one rank at atom_steps_per_s (grains x
-    steps per second); us_factor: the cost of a step with ultrasound over
-    one without"""
+    steps per second); with ultrasound each solve costs solve_steps steps
+    (default US_SOLVE_STEPS, measured at H/d = 30)"""
+    solve_steps = US_SOLVE_STEPS if solve_steps is None else solve_steps
     prep, shear = steps(settings)
     atoms = grains(settings["Hd"], settings.get("LH", 5)) + 2 * round(settings.get("LH", 5) * settings["Hd"])
-    factor = us_factor if settings.get("freq", 0) > 0 else 1.0
+    factor = 1.0 + solve_steps / solve_interval(settings) if settings.get("freq", 0) > 0 else 1.0
     return (prep + shear * factor) * atoms / atom_steps_per_s / 3600.0
 
 
-def plan(sets, atom_steps_per_s, us_factor=1.0):
+def plan(sets, atom_steps_per_s, solve_steps=None):
     """The lines of a table of the runs of sets: name, I_M, length, steps, hours"""
     lines = ["| run | H/d | L/H | N_U | N_P | I_M | walls | f (kHz) | shear (H/U) | recorded (d/U; s) "
              "| steps | chunk (H/U) | hours |", "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     total = {}
     for set_name in sets:
         for name, s in set_jobs(set_name).items():
-            hours = cost_hours(s, atom_steps_per_s, us_factor)
+            hours = cost_hours(s, atom_steps_per_s, solve_steps)
             total[set_name] = total.get(set_name, 0.0) + hours
             im = s["NU"] / math.sqrt(s["NP"]) * (1.0 / s["Hd"]) ** 1.5
             rec_s = (s["strain"] - s["tskip"]) * hu_seconds(s["NU"], s["Hd"])
@@ -435,6 +453,7 @@ def run(args):
     if not os.access(lmp, os.X_OK):
         sys.exit(f"no LAMMPS at {lmp} (./run.sh build first, or --lmp)")
     lmp, here, out = os.path.abspath(lmp), os.path.abspath(args.here), os.path.abspath(args.out)
+    deadline = None if not args.hours else time.time() + 3600.0 * args.hours
     jobs = []
     for set_name in args.sets:
         for name, settings in set_jobs(set_name).items():
@@ -443,7 +462,7 @@ def run(args):
             directory = os.path.join(out, set_name, name)
             if study.read_result(directory) is None:
                 jobs.append((lmp, here, directory, settings, args.ranks, args.piece_hours * 3600.0,
-                             args.max_pieces, print))
+                             args.max_pieces, print, deadline))
     study.run_jobs(run_job, jobs, args.jobs)
 
 
@@ -459,7 +478,7 @@ def figures(args):
 
 def plan_command(args):
     """study.py plan"""
-    print("\n".join(plan(args.sets, args.rate, args.us_factor)))
+    print("\n".join(plan(args.sets, args.rate, args.solve_steps)))
 
 
 def main(here, argv=None):
@@ -485,14 +504,17 @@ def main(here, argv=None):
                             help="wall hours per LAMMPS process, ended at the next restart point (default 2; 0: none)")
         parser.add_argument("--max-pieces", type=int,
                             help="processes per cavity in this call (default: until it ends)")
+        parser.add_argument("--hours", type=float, default=0,
+                            help="wall hours of this call: no piece starts after them, and a running piece stops "
+                                 "at its first restart point after them (default 0: no limit)")
         parser.set_defaults(here=here)
 
     def plan_arguments(parser):
         parser.add_argument("sets", nargs="+", choices=sorted(SETS), metavar="SET")
         parser.add_argument("--rate", type=float, default=RATE,
                             help=f"grain-steps per second of one rank (default {RATE:.3g}, measured: RESULTS.md)")
-        parser.add_argument("--us-factor", type=float, default=US_FACTOR,
-                            help=f"cost of a step with ultrasound over one without (default {US_FACTOR:g})")
+        parser.add_argument("--solve-steps", type=float, default=US_SOLVE_STEPS,
+                            help=f"cost of one vibration solve in steps of the shear (default {US_SOLVE_STEPS:g})")
 
     return study.main("Paper 004's lid-driven cavity: run the cavities, collect the tables, draw the figures.", {
         "run": (run, "run the cavities of the sets not yet finished (resumable, in pieces)", run_arguments),
@@ -503,6 +525,8 @@ def main(here, argv=None):
 
 
 # measured speed of in.cavity at H/d = 30 on one rank (RESULTS.md, "Cost"):
-# grain-steps per second, and the cost of a step with ultrasound over one without
-RATE = 1.0e6
-US_FACTOR = 3.0
+# grain-steps per second of the shear (4 852 atoms, 600 steps/s on the
+# shared 2-core machine), and the cost of one vibration solve of fix
+# acoustic/mindlin (4 550 grains, 70 kHz) in steps of the shear
+RATE = 2.9e6
+US_SOLVE_STEPS = 38.0

@@ -172,3 +172,19 @@ def test_by_im_groups_packings_and_pairs():
     mean, sem, n = q["Fnorm"]
     assert mean == pytest.approx(0.52) and sem == pytest.approx(0.02 / math.sqrt(3)) and n == 3
     assert groups[0.3]["Fnorm"][2] == 1 and np.isnan(groups[0.3]["Fnorm"][1])
+
+
+def test_spectrum_position(tmp_path):
+    # a uniform density of states over 0 .. 100 kHz on 50 bins of 3 kHz up to 150 kHz
+    centres = 1500.0 + 3000.0 * np.arange(50)
+    density = np.where(centres < 100e3, 1.0, 0.0)
+    density /= np.sum(density) * 3000.0
+    below, band = cavity.spectrum_position(centres, density, 70e3)
+    # the bins of centres below 100 kHz end at 99 kHz: a uniform density over 0 .. 99 kHz
+    assert below == pytest.approx(70 / 99) and band == pytest.approx(0.999 * 99e3)
+    assert cavity.spectrum_position(centres, density, 200e3)[0] == 1.0
+    path = tmp_path / "c.modes.hist"
+    path.write_text("# Time-averaged data for fix spectrum\n# TimeStep Number-of-rows\n# Row c_spectrum[1] c_spectrum[2]\n"
+                    "100 2\n1 1000 1e-4\n2 3000 4e-4\n")
+    x, dens = cavity.read_modes_histogram(str(path))
+    assert np.allclose(x, [1000, 3000]) and np.allclose(dens, [1e-4, 4e-4])

@@ -14,6 +14,7 @@ import os
 import re
 import subprocess
 import sys
+import time
 
 import numpy as np
 import pytest
@@ -178,6 +179,14 @@ def test_pieces_are_the_uninterrupted_run(small_run, tmp_path):
     one, pieced = params(whole), params(path)
     assert one.pop("wall_seconds") > 0 and pieced.pop("wall_seconds") > 0
     assert pieced == one
+
+
+def test_no_piece_after_the_deadline(tmp_path):
+    """study.py run --hours: no piece starts after the call's deadline"""
+    settings = cavity_study.job_settings("test", "late", SMALL["Hd"], SMALL["NP"], SMALL["NU"], SMALL["strain"],
+                                         SMALL["tskip"], 0, tag="c")
+    printed = cavity_study.run_job(LMP, HERE, str(tmp_path / "late"), settings, deadline=time.time() - 1)
+    assert "paused at the start" in printed and not (tmp_path / "late" / "log.lammps").exists()
 
 
 def test_ultrasound_from_the_bottom(tmp_path):
