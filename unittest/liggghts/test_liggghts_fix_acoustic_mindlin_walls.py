@@ -381,3 +381,48 @@ def test_fix_before_mesh_wall(tmp_path, lig):
     errors = [line for line in proc.stdout.split("\n") if line.startswith("ERROR")]
     assert errors, proc.stdout[-2000:]
     assert "define it after fix floor" in errors[0], errors[0]
+
+
+# --------------------------------------------------------------------------
+# 4. a run: the column under gravity on the vibrating floor, factors every 10
+#    steps; the mesh floor gives the primitive floor's run, 2 ranks 1 rank's
+
+DYNAMICS = ("fix grav all gravity 9.81 vector 0.2 0.0 -1.0\n"
+            "fix integr all nve/sphere\n"
+            "run 300\n"
+            "dump d all custom 1 atoms.dump id x y z vx vy vz\n"
+            "dump_modify d sort id format \"%d %.17g %.17g %.17g %.17g %.17g %.17g\"\n"
+            "run 0")
+
+
+def test_run_mesh_primitive_ranks(tmp_path, lig):
+    states, rows = {}, {}
+    for floor, nranks in (("primitive", 1), ("mesh", 1), ("mesh", 2)):
+        if floor == "primitive":
+            walls, source = PRIMITIVE, "wall floor"
+        else:
+            walls, source = MESH + "\n" + MESH_HISTORY, "mesh stl"
+        fix = FIX.format(f=F, U0=U0, source=source, E=E, NU=NU,
+                         extra="direction 0 0 1").replace("mindlin 1 ", "mindlin 10 ")
+        text = deck(walls, source, fix=fix, after=DYNAMICS)
+        text = text.replace("dump c all local 1", "dump c all local 10").replace(
+            "dump h all local 1", "dump h all local 10").replace(
+            "dump m all local 1", "dump m all local 10")
+        d = tmp_path / ("%s_np%d" % (floor, nranks))
+        run(lig, str(d), text, nranks=nranks)
+        states[floor, nranks] = atom_rows(str(d / "atoms.dump"))
+        rows[floor, nranks] = local_rows(str(d / "fix.contacts"), 6)
+    a, b, c = states["primitive", 1], states["mesh", 1], states["mesh", 2]
+    # the run did something: the grains moved down and sideways
+    assert all(a[i][3] != 0.0 for i in a)
+    assert c == b
+    assert rows["mesh", 2] == rows["mesh", 1]
+    worst = max(relative(a[i][k], b[i][k]) for i in a for k in range(3))
+    worstv = max(abs(a[i][k] - b[i][k]) for i in a for k in range(3, 6)) / \
+        max(abs(a[i][k]) for i in a for k in range(3, 6))
+    print("mesh - primitive floor after 300 steps: positions %g, velocities %g" % (worst, worstv))
+    assert worst < 1e-10 and worstv < 1e-6
+    ra, rb = rows["primitive", 1], rows["mesh", 1]
+    assert sorted(ra) == sorted(rb)
+    assert max(relative(ra[k][5], rb[k][5]) for k in ra) < 1e-6
+    assert min(row[5] for row in rb.values()) < 1.0
