@@ -563,16 +563,19 @@ def strain_rate_2d(x, y, vx, vy):
 
 
 def local_rheology(sxx, syy, sxy, Dxx, Dyy, Dxy, d, rho_p):
-    """Paper 004's Eqs. 16-19 applied literally to the planar fields, as 3x3
-    tensors with no z component (the contact stress of spheres whose
-    centres lie in a plane has sigma_zz = 0; D_zz = 0): sigma = p I_3 +
-    sigma' (compression positive), p = Tr(sigma) / 3; ||A|| =
+    """Paper 004's Eqs. 16-19 applied to the planar fields, as 3x3 tensors
+    with no z component (the contact stress of spheres whose centres lie in
+    a plane has sigma_zz = 0; D_zz = 0): sigma = p I_3 + sigma' with the
+    stress counted positive in compression, p = Tr(sigma) / 3; ||A|| =
     sqrt(Tr(A A^T) / 2); I = d sqrt(rho_p) ||D'|| / sqrt(p) (Eq. 18);
-    mu_loc = Tr(sigma' D') / 3 / (p ||D'||) (Eq. 19).  For a simple shear
-    at rate gamma with in-plane pressure p2 = (sxx + syy) / 2 and shear
-    stress tau this is mu_loc = tau / p2 and I = sqrt(3/8) d gamma
-    sqrt(rho_p / p2).  sxx, syy, sxy: stress with compression positive (Pa);
-    returns (I, mu_loc), NaN where p <= 0 or D' = 0."""
+    mu_loc = -Tr(sigma' D') / 3 / (p ||D'||) (Eq. 19, its sign such that a
+    stress that resists the deformation, i.e. dissipates, gives mu_loc > 0:
+    the paper's Love-Weber sum f_c (x) l_c is negative in compression).  For
+    a simple shear vx = gamma y with in-plane pressure p2 = (sxx + syy) / 2
+    and the resisting shear stress sxy = -tau (compression positive) this
+    is mu_loc = tau / p2 and I = sqrt(3/8) d gamma sqrt(rho_p / p2).
+    sxx, syy, sxy: stress with compression positive (Pa); returns (I,
+    mu_loc), NaN where p <= 0 or D' = 0."""
     sxx, syy, sxy = (np.asarray(a, float) for a in (sxx, syy, sxy))
     Dxx, Dyy, Dxy = (np.asarray(a, float) for a in (Dxx, Dyy, Dxy))
     p = (sxx + syy) / 3.0
@@ -585,7 +588,7 @@ def local_rheology(sxx, syy, sxy, Dxx, Dyy, Dxy, d, rho_p):
     with np.errstate(invalid="ignore", divide="ignore"):
         good = (p > 0) & (normD > 0)
         I = np.where(good, d * np.sqrt(rho_p) * normD / np.sqrt(np.where(p > 0, p, 1.0)), np.nan)
-        mu = np.where(good, contraction / 3.0 / (np.where(good, p * normD, 1.0)), np.nan)
+        mu = np.where(good, -contraction / 3.0 / (np.where(good, p * normD, 1.0)), np.nan)
     return I, mu
 
 

@@ -89,9 +89,9 @@ def test_local_rheology_of_a_simple_shear():
     X, Y = np.meshgrid(x, y)
     Dxx, Dyy, Dxy = cavity.strain_rate_2d(x, y, gamma * Y, 0 * X)
     assert np.allclose(Dxx, 0) and np.allclose(Dyy, 0) and np.allclose(Dxy, gamma / 2)
-    # the stress resisting the shear: sigma_xy = tau with vx = gamma y (compression positive, the
-    # stress does positive work on D: Tr(sigma' D') > 0)
-    I, mu = cavity.local_rheology(np.full_like(X, p2), np.full_like(X, p2), np.full_like(X, tau), Dxx, Dyy, Dxy,
+    # the stress resisting the shear vx = gamma y: the material above drags the material below
+    # along +x, a traction +tau on a plane of normal +y, sigma_xy = -tau counted positive in compression
+    I, mu = cavity.local_rheology(np.full_like(X, p2), np.full_like(X, p2), np.full_like(X, -tau), Dxx, Dyy, Dxy,
                                   d, rho)
     assert np.allclose(mu, tau / p2)
     assert np.allclose(I, math.sqrt(3 / 8) * d * gamma * math.sqrt(rho / p2))
