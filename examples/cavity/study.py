@@ -2,7 +2,8 @@
 """Paper 004's lid-driven cavity: examples/cavity/study.py run | collect |
 figures; the work is done by acoustic_tools.cavity_study.
 
-    examples/cavity/study.py run scan us paper size   # the cavities into out/<set>/<name>/
+    examples/cavity/study.py plan h30                 # the runs of a set and their cost
+    examples/cavity/study.py run h30 --hours 10       # the cavities into out/<set>/<name>/, in pieces
     examples/cavity/study.py collect                  # out/summary.json, out/tables.md
     examples/cavity/study.py figures                  # figures/*.png
 

@@ -13,7 +13,17 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix.h"
+#include "fix_contact_history_mesh.h"
+#include "fix_mesh_surface.h"
+#include "fix_neighlist_mesh.h"
+#include "fix_property_atom.h"
+#include "fix_wall_gran.h"
 #include "force.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "primitive_wall.h"
+#include "tri_mesh.h"
 #include "neigh_list.h"
 #include "pair_gran.h"
 #include "pair_gran_proxy.h"
@@ -24,17 +34,19 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <cstring>
 
 using namespace LAMMPS_NS;
 
 namespace {
 const int GRAIN_WORDS = 4;      // tag, mass, radius, flag
-const int CONTACT_WORDS = 7;    // tag lo, tag hi, normal (3, from hi to lo), k_n, k_t
+const int CONTACT_WORDS = 7;    // tag lo, tag hi (-1 - w for wall w), normal (3, from hi to lo), k_n, k_t
+const char *const FACTOR_NAME = "acousticFrictionReduction";
 }    // namespace
 
 AcousticLiggghtsNetwork::AcousticLiggghtsNetwork(LAMMPS *lmp, const std::string &caller) :
     Pointers(lmp), caller_(caller), youngs_modulus_(-1.0), poisson_ratio_(0.0), kappa_scale_(1.0),
-    ratio_(2.0 / 7.0), pair_(NULL), factor_offset_(-1)
+    ratio_(2.0 / 7.0), pair_(NULL), factor_offset_(-1), need_factor_(false)
 {
 }
 
@@ -61,8 +73,9 @@ void AcousticLiggghtsNetwork::set_stiffness(double youngs_modulus, double poisso
 
 /* ---------------------------------------------------------------------- */
 
-void AcousticLiggghtsNetwork::init(bool need_factor)
+void AcousticLiggghtsNetwork::init(bool need_factor, int caller_fix)
 {
+  need_factor_ = need_factor;
   if (!atom->radius_flag || !atom->rmass_flag)
     error_all("needs atoms with radius and per-atom mass (atom_style granular)");
   pair_ = dynamic_cast<PairGran *>(force->pair_match("gran", 0));
@@ -86,6 +99,86 @@ void AcousticLiggghtsNetwork::init(bool need_factor)
   if (force->newton_pair) error_all("needs newton off (pair_style gran with a history model)");
   if (!(youngs_modulus_ > 0.0))
     error_all("the stiffness constants were not set (stiffness hertz E nu)");
+  init_walls(caller_fix);
+}
+
+/* ----------------------------------------------------------------------
+   the walls: every fix wall/gran, a primitive wall or each of its meshes
+------------------------------------------------------------------------- */
+
+void AcousticLiggghtsNetwork::init_walls(int caller_fix)
+{
+  walls_.clear();
+  for (int ifix = 0; ifix < modify->nfix; ifix++) {
+    FixWallGran *fix = dynamic_cast<FixWallGran *>(modify->fix[ifix]);
+    if (!fix || strcmp(modify->fix[ifix]->style, "wall/gran") != 0) continue;
+    if (!fix->contact_match("normal", "hertz"))
+      error_all("fix %s (wall/gran) is not model hertz: the walls' contacts are Hertz springs "
+                "of the network (hooke and the other normal models are not available yet)",
+                fix->id);
+    const bool acoustic = fix->contact_match("tangential", "history/acoustic");
+    const int offset = acoustic ? fix->get_history_offset(FACTOR_NAME) : -1;
+    if (acoustic && offset < 0)
+      error_all("fix %s (wall/gran) has no history value \"%s\"", fix->id, FACTOR_NAME);
+    if (!fix->is_mesh_wall()) {
+      Wall w;
+      w.id = fix->id;
+      w.fix = fix;
+      w.mesh = NULL;
+      w.factor_offset = offset;
+      w.plane_axis = -1;
+      // a plane: resolveContact's delta has the plane's axis only, the same
+      // at two points that differ off that axis
+      PrimitiveWall *prim = fix->primitiveWall();
+      if (!prim) error_all("fix %s (wall/gran) has no primitive wall", fix->id);
+      for (int axis = 0; axis < 3 && w.plane_axis < 0; axis++) {
+        double p1[3] = {0.25, 0.5, 0.75}, p2[3] = {0.25, 0.5, 0.75};
+        double d1[3] = {0.0, 0.0, 0.0}, d2[3] = {0.0, 0.0, 0.0};
+        p2[(axis + 1) % 3] += 1.0;
+        p2[(axis + 2) % 3] -= 1.0;
+        prim->resolveContact(p1, 0.0, d1);
+        prim->resolveContact(p2, 0.0, d2);
+        bool plane = d1[axis] != 0.0 && d1[axis] == d2[axis];
+        for (int k = 0; k < 3; k++)
+          if (k != axis && (d1[k] != 0.0 || d2[k] != 0.0)) plane = false;
+        if (plane) w.plane_axis = axis;
+      }
+      walls_.push_back(w);
+      continue;
+    }
+    for (int m = 0; m < fix->n_meshes(); m++) {
+      FixMeshSurface *mesh = fix->mesh_list()[m];
+      Wall w;
+      w.id = mesh->id;
+      w.fix = fix;
+      w.mesh = mesh;
+      w.factor_offset = offset;
+      w.plane_axis = -1;
+      for (size_t k = 0; k < walls_.size(); k++)
+        if (walls_[k].id == w.id)
+          error_all("mesh %s is used by two fix wall/gran (%s and %s): give each wall fix a mesh "
+                    "of its own",
+                    mesh->id, walls_[k].fix->id, fix->id);
+      // the walk calls the mesh's neighbor list and contact tracker as the
+      // wall fix does: their pre_force must have run before the caller's
+      if (caller_fix >= 0 && need_factor_) {
+        const int nl = mesh->meshNeighlist() ? modify->find_fix(mesh->meshNeighlist()->id) : -1;
+        const int tr = mesh->contactHistory() ? modify->find_fix(mesh->contactHistory()->id) : -1;
+        if (nl < 0 || nl > caller_fix || tr > caller_fix)
+          error_all("define it after fix %s (wall/gran with mesh %s): the mesh's neighbor list "
+                    "and contact tracker must be updated before it",
+                    fix->id, mesh->id);
+      }
+      walls_.push_back(w);
+    }
+  }
+}
+
+int AcousticLiggghtsNetwork::wall_index(const std::string &id) const
+{
+  for (size_t k = 0; k < walls_.size(); k++)
+    if (walls_[k].id == id) return static_cast<int>(k);
+  return -1;
 }
 
 /* ----------------------------------------------------------------------
@@ -130,6 +223,7 @@ void AcousticLiggghtsNetwork::collect(int groupbit)
       Contact c;
       c.i = i;
       c.j = j;
+      c.wall = -1;
       // divided by r, as the LAMMPS walker (GranularContactWalker::linearise):
       // multiplied by 1/r, a normal differs in its last bit, and the softest
       // modes of a network amplify that by (f_max / f)^2
@@ -158,6 +252,167 @@ void AcousticLiggghtsNetwork::collect(int groupbit)
         error->one(FLERR, message);
       }
       contacts_.push_back(c);
+    }
+  }
+  for (size_t w = 0; w < walls_.size(); w++) {
+    if (walls_[w].mesh)
+      collect_mesh(groupbit, static_cast<int>(w));
+    else
+      collect_primitive(groupbit, static_cast<int>(w));
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the contact of owned atom i with wall w: delta from the grain's centre
+   to the wall's closest point (as the wall fix's geometry gives it),
+   overlap > 0
+------------------------------------------------------------------------- */
+
+void AcousticLiggghtsNetwork::add_wall_contact(int i, int w, const double *delta, double overlap,
+                                               int wall_type, double *history)
+{
+  const char *who = caller_.c_str();
+  double **Yeff = force->registry.getMatrixProperty("Yeff", who)->data;
+  double **coeffFrict = force->registry.getMatrixProperty("coeffFrict", who)->data;
+  const double r = atom->radius[i];
+  const int itype = atom->type[i];
+  const double dist = sqrt(delta[0] * delta[0] + delta[1] * delta[1] + delta[2] * delta[2]);
+  Contact c;
+  c.i = i;
+  c.j = -1;
+  c.wall = w;
+  for (int k = 0; k < 3; k++) c.n[k] = -delta[k] / dist;
+  // LIGGGHTS's hertz of a wall contact: R_eff = r_i (normal_model_hertz.h)
+  const double kn_wall = 4. / 3. * Yeff[itype][wall_type] * sqrt(r * overlap);
+  c.fn = kn_wall * overlap;
+  // the Hertz stiffness of a grain on a flat body of infinite radius: R* = r_i
+  const double estar = youngs_modulus_ / (2.0 * (1.0 - poisson_ratio_ * poisson_ratio_));
+  const double rstar = 1.0 / (1.0 / r + 0.0);
+  const double kappa = kappa_scale_ * (4.0 / 3.0 * estar * sqrt(rstar));
+  c.kn = (c.fn > 0.0) ? 1.5 * pow(kappa, 2.0 / 3.0) * cbrt(c.fn) : 0.0;
+  c.kt = ratio_ * c.kn;
+  c.mu = coeffFrict[itype][wall_type];
+  const int offset = walls_[w].factor_offset;
+  c.slot = (history && offset >= 0) ? history + offset : NULL;
+  c.counted = true;
+  if (!(dist > 0.0) || !(std::isfinite(c.fn) && std::isfinite(c.kn))) {
+    char message[512];
+    snprintf(message, sizeof(message),
+             "%s: the contact of atom %d with %s %s has no normal or a non-finite Hertz force "
+             "or stiffness (its centre on the wall?); check the wall and youngsModulus",
+             who, atom->tag[i], walls_[w].mesh ? "mesh" : "wall", walls_[w].id.c_str());
+    error->one(FLERR, message);
+  }
+  contacts_.push_back(c);
+}
+
+/* ----------------------------------------------------------------------
+   On the first run after a wall fix was defined, Modify::setup sets every
+   just-created per-atom fix to its defaults (FixPropertyAtom: the initial
+   values, zero; FixContactHistory: no partner), after the setup_pre_force
+   in which the walk writes into them: a primitive wall's factors would be
+   lost, a mesh tracker's partner counts zeroed under its partners (which
+   LIGGGHTS's own compute wall/gran/local then trips over).  Do that
+   initialisation now instead, under the same condition: Modify::setup then
+   finds nothing left to do but clear the flags, as it would have, and the
+   arrays hold what they would have held before any contact was written.
+------------------------------------------------------------------------- */
+
+void AcousticLiggghtsNetwork::settle_just_created(Fix *fix)
+{
+  if (fix->recent_restart || !fix->just_created || !fix->create_attribute) return;
+  fix->just_created = 0;
+  fix->pre_set_arrays();
+  int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & fix->groupbit) fix->set_arrays(i);
+}
+
+// a primitive wall: FixWallGran::post_force_primitive's contacts
+void AcousticLiggghtsNetwork::collect_primitive(int groupbit, int w)
+{
+  FixWallGran *fix = walls_[w].fix;
+  PrimitiveWall *prim = fix->primitiveWall();
+  double **history = NULL;
+  if (walls_[w].factor_offset >= 0) {
+    const std::string name = std::string("history_") + fix->id;
+    const int ifix = modify->find_fix(name.c_str());
+    FixPropertyAtom *hist = ifix >= 0 ? dynamic_cast<FixPropertyAtom *>(modify->fix[ifix]) : NULL;
+    if (!hist || !hist->array_atom)
+      error_all("fix %s (wall/gran) has no per-atom contact history (fix %s)", fix->id,
+                name.c_str());
+    if (need_factor_) settle_just_created(hist);
+    history = hist->array_atom;
+  }
+  double **x = atom->x;
+  double *radius = atom->radius;
+  int *mask = atom->mask;
+  const int wall_type = fix->atom_type_wall();
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit) || !(mask[i] & fix->groupbit)) continue;
+    double delta[3] = {0.0, 0.0, 0.0};
+    const double deltan = prim->resolveContact(x[i], radius[i], delta);
+    if (!(deltan < 0.0)) continue;
+    add_wall_contact(i, w, delta, -deltan, wall_type, history ? history[i] : NULL);
+  }
+}
+
+// a mesh: FixWallGran::post_force_mesh's contacts (see the header)
+void AcousticLiggghtsNetwork::collect_mesh(int groupbit, int w)
+{
+  FixMeshSurface *fmesh = walls_[w].mesh;
+  TriMesh *mesh = fmesh->triMesh();
+  FixNeighlistMesh *nlist = fmesh->meshNeighlist();
+  FixContactHistoryMesh *tracker = fmesh->contactHistory();
+  if (!nlist) error_all("mesh %s has no neighbor list (is it used by fix wall/gran?)", fmesh->id);
+  const bool with_history = need_factor_ && walls_[w].factor_offset >= 0;
+  if (with_history && !tracker)
+    error_all("mesh %s has no contact tracker for its history", fmesh->id);
+  double **x = atom->x;
+  double *radius = atom->radius;
+  int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const int wall_type = fmesh->atomTypeWall();
+  const double contact_distance = neighbor->contactDistanceFactor - 1.0;
+  // read-only: the triangles taken so far for each atom, and whether by a face
+  std::vector<std::vector<std::pair<int, bool> > > taken;
+  if (!with_history && tracker) taken.resize(nlocal);
+  if (with_history) {
+    settle_just_created(tracker);
+    tracker->markAllContacts();
+  }
+  const int ntri = mesh->sizeLocal() + mesh->sizeGhost();
+  for (int iTri = 0; iTri < ntri; iTri++) {
+    const std::vector<int> &neighbors = nlist->get_contact_list(iTri);
+    const int idTri = mesh->id(iTri);
+    for (size_t k = 0; k < neighbors.size(); k++) {
+      const int i = neighbors[k];
+      if (i >= nlocal) continue;
+      double delta[3] = {0.0, 0.0, 0.0}, bary[3];
+      int barysign = -1;
+      const double deltan =
+          mesh->resolveTriSphereContactBary(i, iTri, radius[i], x[i], delta, bary, barysign, true);
+      if (!(deltan <= 0.0 || deltan < contact_distance * radius[i])) continue;
+      const bool face = (7 == barysign);
+      double *history = NULL;
+      if (with_history) {
+        if (!tracker->handleContact(i, idTri, history, deltan <= 0.0, face)) continue;
+      } else if (tracker) {
+        // the tracker's rule, read only: known, or no coplanar one taken by now
+        bool known = false;
+        for (int p = 0; p < tracker->nneighs(i) && !known; p++)
+          known = tracker->get_partner_idTri(i, p) == idTri;
+        if (!known && face) {
+          bool coplanar = false;
+          for (size_t t = 0; t < taken[i].size() && !coplanar; t++)
+            coplanar = taken[i][t].first != idTri &&
+                mesh->areCoplanarNodeNeighs(taken[i][t].first, idTri);
+          if (coplanar) continue;
+        }
+        taken[i].push_back(std::make_pair(idTri, face));
+      }
+      if (!(mask[i] & groupbit) || !(deltan < 0.0)) continue;
+      add_wall_contact(i, w, delta, -deltan, wall_type, history);
     }
   }
 }
@@ -209,6 +464,15 @@ void AcousticLiggghtsNetwork::gather(int groupbit, const std::vector<int> &flagb
   for (size_t k = 0; k < contacts_.size(); k++) {
     const Contact &c = contacts_[k];
     if (!c.counted || !(c.kn > 0.0)) continue;
+    if (c.wall >= 0) {
+      // the grain first, the wall second (its normal from the wall to the grain)
+      contact_words.push_back(tag[c.i]);
+      contact_words.push_back(-1.0 - c.wall);
+      for (int d = 0; d < 3; d++) contact_words.push_back(c.n[d]);
+      contact_words.push_back(c.kn);
+      contact_words.push_back(c.kt);
+      continue;
+    }
     const bool flip = tag[c.i] > tag[c.j];
     const double sign = flip ? -1.0 : 1.0;
     contact_words.push_back(flip ? tag[c.j] : tag[c.i]);
@@ -240,14 +504,18 @@ void AcousticLiggghtsNetwork::gather(int groupbit, const std::vector<int> &flagb
     out.flag[g] = static_cast<char>(static_cast<int>(w[3]));
     out.input.grains.push_back(Acoustic::GatheredGrain(w[1], w[2]));
   }
+  // the walls: nodes of infinite mass after every atom
+  for (size_t k = 0; k < walls_.size(); k++)
+    out.input.grains.push_back(Acoustic::GatheredGrain(HUGE_VAL, 1.0));
   const int nc = static_cast<int>(all_contacts.size()) / CONTACT_WORDS;
   for (int k = 0; k < nc; k++) {
     const double *w = &all_contacts[CONTACT_WORDS * k];
     Acoustic::GatheredContact c;
     c.i = static_cast<int>(std::lower_bound(out.tags.begin(), out.tags.end(), w[0]) -
                            out.tags.begin());
-    c.j = static_cast<int>(std::lower_bound(out.tags.begin(), out.tags.end(), w[1]) -
-                           out.tags.begin());
+    c.j = (w[1] < 0.0) ? ng + static_cast<int>(-1.0 - w[1])
+                       : static_cast<int>(std::lower_bound(out.tags.begin(), out.tags.end(), w[1]) -
+                                          out.tags.begin());
     for (int d = 0; d < 3; d++) c.normal[d] = w[2 + d];
     c.kn = w[5];
     c.kt = w[6];
@@ -257,16 +525,14 @@ void AcousticLiggghtsNetwork::gather(int groupbit, const std::vector<int> &flagb
 
 /* ---------------------------------------------------------------------- */
 
-void AcousticLiggghtsNetwork::broadcast(std::vector<double> &tags, std::vector<double> &q, int ndof)
+void AcousticLiggghtsNetwork::broadcast(std::vector<double> &tags, std::vector<double> &q)
 {
-  int ngrains = static_cast<int>(tags.size());
-  MPI_Bcast(&ngrains, 1, MPI_INT, 0, world);
-  tags.resize(ngrains);
-  q.resize(static_cast<size_t>(ngrains) * 2 * ndof);
-  if (ngrains > 0) {
-    MPI_Bcast(&tags[0], ngrains, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&q[0], ngrains * 2 * ndof, MPI_DOUBLE, 0, world);
-  }
+  int sizes[2] = {static_cast<int>(tags.size()), static_cast<int>(q.size())};
+  MPI_Bcast(sizes, 2, MPI_INT, 0, world);
+  tags.resize(sizes[0]);
+  q.resize(sizes[1]);
+  if (sizes[0] > 0) MPI_Bcast(&tags[0], sizes[0], MPI_DOUBLE, 0, world);
+  if (sizes[1] > 0) MPI_Bcast(&q[0], sizes[1], MPI_DOUBLE, 0, world);
 }
 
 int AcousticLiggghtsNetwork::grain_index(const std::vector<double> &tags, double tag)

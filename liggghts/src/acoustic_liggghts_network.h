@@ -45,7 +45,41 @@
    rank order; the facade sorts them, so the result does not depend on it.
    Contacts with k_n = 0 (touching, no force) are left out of the network.
 
-   Walls are not handled here yet: only grain-grain contacts.
+   Walls (init, collect_walls): every fix wall/gran is part of the
+   network: a primitive wall (xplane, ..., zcylinder) is one node, each
+   mesh of a mesh wall (fix mesh/surface ... used by fix wall/gran ...
+   mesh n_meshes n meshes ...) is one node, named by the mesh fix's ID;
+   nodes of infinite mass (HUGE_VAL: every DOF prescribed by the caller,
+   clamped unless named), after every atom in the gathered input (node
+   tags.size() + w for wall w).  A wall contact is grain i (local) with
+   wall w, j = -1, its normal from the wall to the grain, F_n LIGGGHTS's
+   Hertz force of a wall contact (R_eff = r_i, Yeff of the grain's type
+   and the wall's type), k_n at R* = r_i (a flat body of infinite radius,
+   as the LAMMPS fix), mu coeffFrict of the two types, slot the 1 - s of
+   the wall's contact history when its tangential model is history/acoustic
+   (else NULL: that wall keeps its friction, as in LAMMPS).
+   - primitive walls: the grains of the wall fix's group whose overlap
+     with the wall, as PrimitiveWall::resolveContact gives it (the wall
+     fix's own call), is > 0; history: the wall fix's per-atom history
+     (fix property/atom history_<wall-ID>).
+   - meshes: the grains the mesh's neighbor list (fix neighlist/mesh)
+     lists for a triangle, with the distance of
+     TriMesh::resolveTriSphereContactBary, the call of
+     FixWallGran::post_force_mesh, in the same order (triangles owned and
+     ghost, then the list).  Which of those contacts LIGGGHTS computes is
+     decided by its contact tracker (fix contacthistory/mesh): a grain on
+     two coplanar triangles is one contact, not two.  With a history
+     (need_factor), the walk calls the tracker itself exactly as
+     post_force_mesh does (markAllContacts, then handleContact for every
+     contact within the contact distance), so that the network's contacts
+     are the ones the forces will use and a new contact gets its history
+     slot now; post_force_mesh then finds each again (its first test) and
+     the tracker ends in the same state.  Rather than a copy of the
+     contact geometry (the triangle's closest point, its edges and
+     corners), the mesh's own function is called: the overlap and normal
+     are LIGGGHTS's to the last bit.  Without need_factor the tracker is
+     only read: a contact is taken if the tracker knows it, or it is not a
+     face contact, or no coplanar triangle was taken before it.
 
    C++98, as LIGGGHTS.  Every error is error->all (or error->one where only
    one processor can see it) with the caller's name.
@@ -67,18 +101,29 @@ class AcousticLiggghtsNetwork : protected Pointers {
  public:
   // one contact of this processor
   struct Contact {
-    int i, j;          // local atom indices (j may be a ghost)
-    double n[3];       // unit normal from j to i
+    int i, j;          // local atom indices (j may be a ghost; -1 for a wall)
+    int wall;          // the wall (index in walls()), or -1 for two grains
+    double n[3];       // unit normal from j (or the wall) to i
     double fn, kn, kt, mu;
     double *slot;      // the history value 1 - s, or NULL
     bool counted;      // this processor's copy is the one gathered and reported
+  };
+
+  // a wall of the network
+  struct Wall {
+    std::string id;            // fix wall/gran ID (primitive) or fix mesh/surface ID (mesh)
+    class FixWallGran *fix;    // the wall fix
+    class FixMeshSurface *mesh;    // the mesh, NULL for a primitive wall
+    int plane_axis;            // a primitive plane: its axis (0, 1, 2); otherwise -1
+    int factor_offset;         // of 1 - s in the wall's contact history, or -1
   };
 
   // the network on rank 0 (empty on the other ranks)
   struct Gathered {
     std::vector<double> tags;             // atom ID of grain g, ascending
     std::vector<char> flag;               // grain g is in the flag group (bit k: flag group k)
-    Acoustic::GatheredDriveInput input;   // grains and contacts; no drive, nothing prescribed
+    Acoustic::GatheredDriveInput input;   // grains (then the walls) and contacts; no drive,
+                                          // nothing prescribed
   };
 
   // caller: how error messages begin, e.g. "fix acoustic/mindlin us"
@@ -88,12 +133,19 @@ class AcousticLiggghtsNetwork : protected Pointers {
                      double ratio);
 
   // find pair_style gran and check it (hertz, newton off, atom_style
-  // granular); need_factor: require tangential history/acoustic and point
-  // each contact's slot at its factor
-  void init(bool need_factor);
+  // granular) and the walls (fix wall/gran); need_factor: require
+  // tangential history/acoustic of the pair and point each contact's slot
+  // at its factor; caller_fix: the index of the calling fix in modify (the
+  // mesh walls' neighbor lists must come before it), -1 for a compute
+  void init(bool need_factor, int caller_fix = -1);
 
-  // this processor's contacts between atoms of groupbit's group
+  // this processor's contacts between atoms of groupbit's group, and of
+  // its owned atoms with the walls
   void collect(int groupbit);
+
+  const std::vector<Wall> &walls() const { return walls_; }
+  // the wall named id (fix wall/gran or fix mesh/surface ID), or -1
+  int wall_index(const std::string &id) const;
   const std::vector<Contact> &contacts() const { return contacts_; }
 
   // everything on rank 0, in the facade's form (see above); model sets
@@ -105,8 +157,9 @@ class AcousticLiggghtsNetwork : protected Pointers {
   void gather(int groupbit, const std::vector<int> &flagbits,
               Acoustic::FacadeContactModel::Value model, Gathered &out);
 
-  // rank 0's tags and q (2 ndof values per grain) to every rank
-  void broadcast(std::vector<double> &tags, std::vector<double> &q, int ndof);
+  // rank 0's tags and q (2 ndof values per node: the grains, then the
+  // walls) to every rank
+  void broadcast(std::vector<double> &tags, std::vector<double> &q);
 
   // index of atom ID tag in ascending tags, or -1
   static int grain_index(const std::vector<double> &tags, double tag);
@@ -121,9 +174,17 @@ class AcousticLiggghtsNetwork : protected Pointers {
   double youngs_modulus_, poisson_ratio_, kappa_scale_, ratio_;
   class PairGran *pair_;
   int factor_offset_;
+  bool need_factor_;
   std::vector<Contact> contacts_;
+  std::vector<Wall> walls_;
 
   void error_all(const char *fmt, ...);
+  void init_walls(int caller_fix);
+  void settle_just_created(class Fix *fix);
+  void collect_primitive(int groupbit, int w);
+  void collect_mesh(int groupbit, int w);
+  void add_wall_contact(int i, int w, const double *delta, double overlap, int wall_type,
+                        double *history);
 };
 
 }    // namespace LAMMPS_NS

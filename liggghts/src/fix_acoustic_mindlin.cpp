@@ -16,6 +16,7 @@
 #include "error.h"
 #include "force.h"
 #include "group.h"
+#include "modify.h"
 #include "memory.h"
 #include "update.h"
 
@@ -48,7 +49,8 @@ bool parse_number(const char *s, double &value)
 /* ---------------------------------------------------------------------- */
 
 FixAcousticMindlin::FixAcousticMindlin(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), source_group(-1), source_groupbit(0), frequency(-1.0), amplitude(-1.0),
+    Fix(lmp, narg, arg), source_group(-1), source_groupbit(0), source_wall(-1),
+    source_is_mesh(false), frequency(-1.0), amplitude(-1.0),
     direction_given(false), direction_axis(-1), mode_normal(false), youngs_modulus(-1.0),
     poisson_ratio(0.0), kappa_scale(1.0), ratio(2.0 / 7.0), cmu(1.0), mu_min(0.0),
     model_full(false), network(NULL), rows(NULL), maxrows(0)
@@ -106,15 +108,25 @@ void FixAcousticMindlin::parse(int narg, char **arg)
     error_all("%s %s: keyword frequency: f must be a number >= 0, got '%s'", CMD, id, arg[5]);
   if (!parse_number(arg[7], amplitude) || amplitude < 0.0)
     error_all("%s %s: keyword amplitude: U0 must be a number >= 0, got '%s'", CMD, id, arg[7]);
-  source_group = group->find(arg[9]);
-  if (source_group < 0)
-    error_all("%s %s: keyword source: no group '%s' (a source wall is not available in "
-              "LIGGGHTS yet: give a group of grains)",
-              CMD, id, arg[9]);
-  source_groupbit = group->bitmask[source_group];
+  int iarg = 10;
+  if (strcmp(arg[9], "wall") == 0 || strcmp(arg[9], "mesh") == 0) {
+    source_is_mesh = strcmp(arg[9], "mesh") == 0;
+    if (narg < 11)
+      error_all("%s %s: keyword source %s needs the ID of a fix %s", CMD, id, arg[9],
+                source_is_mesh ? "mesh/surface used by fix wall/gran" : "wall/gran (primitive)");
+    source_wall_id = arg[10];
+    iarg = 11;
+  } else {
+    source_group = group->find(arg[9]);
+    if (source_group < 0)
+      error_all("%s %s: keyword source: no group '%s' (give a group of grains, 'wall "
+                "<fix-ID>' of a fix wall/gran primitive wall, or 'mesh <fix-ID>' of a fix "
+                "mesh/surface)",
+                CMD, id, arg[9]);
+    source_groupbit = group->bitmask[source_group];
+  }
 
   bool stiffness_given = false;
-  int iarg = 10;
   while (iarg < narg) {
     const char *key = arg[iarg];
     int nvalues = 1;
@@ -178,7 +190,8 @@ void FixAcousticMindlin::parse(int narg, char **arg)
     error_all("%s %s: keyword stiffness hertz E nu is required in LIGGGHTS (stiffness pair is "
               "not available yet)",
               CMD, id);
-  normalise_direction();
+  // a wall's default direction is its normal, known at init
+  if (direction_given || source_wall_id.empty()) normalise_direction();
 }
 
 // the unit drive direction as the LAMMPS fix computes it
@@ -214,10 +227,38 @@ int FixAcousticMindlin::setmask()
 
 void FixAcousticMindlin::init()
 {
-  network->init(true);
-  if (group->count(source_group) == 0)
-    error_all("%s %s: keyword source: group %s has no atoms; nothing would vibrate", CMD, id,
-              group->names[source_group]);
+  network->init(true, modify->find_fix(id));
+  if (source_wall_id.empty()) {
+    if (group->count(source_group) == 0)
+      error_all("%s %s: keyword source: group %s has no atoms; nothing would vibrate", CMD, id,
+                group->names[source_group]);
+    return;
+  }
+  const char *kind = source_is_mesh ? "mesh" : "wall";
+  source_wall = network->wall_index(source_wall_id);
+  if (source_wall < 0)
+    error_all("%s %s: keyword source %s: no %s '%s' (it must be the ID of a %s)", CMD, id, kind,
+              source_is_mesh ? "mesh" : "wall", source_wall_id.c_str(),
+              source_is_mesh ? "fix mesh/surface used by a fix wall/gran ... mesh"
+                             : "fix wall/gran ... primitive");
+  const AcousticLiggghtsNetwork::Wall &w = network->walls()[source_wall];
+  if (source_is_mesh != (w.mesh != NULL))
+    error_all("%s %s: keyword source %s %s: %s is a %s; write 'source %s %s'", CMD, id, kind,
+              source_wall_id.c_str(), source_wall_id.c_str(),
+              w.mesh ? "mesh (fix mesh/surface)" : "primitive wall (fix wall/gran)",
+              w.mesh ? "mesh" : "wall", source_wall_id.c_str());
+  if (!direction_given) {
+    if (w.plane_axis < 0)
+      error_all("%s %s: keyword source %s %s has no single normal (%s): give the drive with "
+                "keyword direction dx dy dz",
+                CMD, id, kind, source_wall_id.c_str(),
+                w.mesh ? "a mesh" : "not a plane");
+    // the default drive of a plane wall: along its axis, as in LAMMPS
+    direction[0] = direction[1] = direction[2] = 0.0;
+    direction[w.plane_axis] = 1.0;
+    direction_given = true;
+    normalise_direction();
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -258,6 +299,11 @@ void FixAcousticMindlin::update_factors()
       Acoustic::GatheredDriveInput &in = net.input;
       in.frequency = frequency;
       const int ng = static_cast<int>(net.tags.size());
+      // the walls: the source wall moves with the drive, the others are clamped
+      // (a node of infinite mass: every DOF not named is 0)
+      if (source_wall >= 0)
+        for (int d = 0; d < dim; d++)
+          in.prescribed.push_back(Acoustic::PrescribedDof(ng + source_wall, d, direction[d]));
       for (int g = 0; g < ng; g++) {
         if (!net.flag[g]) continue;
         if (mode_normal) {
@@ -301,7 +347,7 @@ void FixAcousticMindlin::update_factors()
       statistics();
       return;
     }
-    network->broadcast(tags_sorted, q, ndof);
+    network->broadcast(tags_sorted, q);
   }
 
   // every copy of every contact, from its lower to its higher atom ID
@@ -322,12 +368,15 @@ void FixAcousticMindlin::update_factors()
   std::string bad_message;
   for (size_t k = 0; k < contacts.size(); k++) {
     const AcousticLiggghtsNetwork::Contact &c = contacts[k];
-    const bool flip = tag[c.i] > tag[c.j];
+    // from the lower to the higher atom ID; a wall comes second
+    const bool wall = c.wall >= 0;
+    const bool flip = !wall && tag[c.i] > tag[c.j];
     const int a = flip ? c.j : c.i, b = flip ? c.i : c.j;
     double s = 1.0, ut = 0.0;
     if (frequency > 0.0 && c.kn > 0.0) {
       const int ga = AcousticLiggghtsNetwork::grain_index(tags_sorted, tag[a]);
-      const int gb = AcousticLiggghtsNetwork::grain_index(tags_sorted, tag[b]);
+      const int gb = wall ? static_cast<int>(tags_sorted.size()) + c.wall
+                          : AcousticLiggghtsNetwork::grain_index(tags_sorted, tag[b]);
       if (ga < 0 || gb < 0) {
         bad++;
         continue;
@@ -335,7 +384,7 @@ void FixAcousticMindlin::update_factors()
       const double sign = flip ? -1.0 : 1.0;
       for (int d = 0; d < 3; d++) in.normal[d] = sign * c.n[d];
       in.radius_i = atom->radius[a];
-      in.radius_j = atom->radius[b];
+      in.radius_j = wall ? 0.0 : atom->radius[b];    // a flat wall's (its rotation is 0)
       in.q_i = &q[static_cast<size_t>(ga) * 2 * ndof];
       in.q_j = &q[static_cast<size_t>(gb) * 2 * ndof];
       in.tangential_stiffness = c.kt;
@@ -349,11 +398,15 @@ void FixAcousticMindlin::update_factors()
       ut = out.tangential_amplitude;
       s = out.factor;
     }
-    *c.slot = 1.0 - s;
+    // a wall whose tangential model has no /acoustic variant keeps its friction
+    if (c.slot)
+      *c.slot = 1.0 - s;
+    else
+      s = 1.0;
     if (!c.counted) continue;
     double *row = rows[nrows++];
     row[0] = tag[a];
-    row[1] = tag[b];
+    row[1] = wall ? 0.0 : tag[b];    // 0: a wall, as in LAMMPS
     row[2] = c.fn;
     row[3] = c.kn;
     row[4] = ut;
@@ -378,7 +431,7 @@ void FixAcousticMindlin::statistics()
   double sum = 0.0, count = 0.0, minimum = 1.0;
   for (size_t k = 0; k < contacts.size(); k++) {
     if (!contacts[k].counted) continue;
-    const double s = 1.0 - *contacts[k].slot;
+    const double s = contacts[k].slot ? 1.0 - *contacts[k].slot : 1.0;
     sum += s;
     count += 1.0;
     minimum = std::min(minimum, s);

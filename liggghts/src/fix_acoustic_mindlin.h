@@ -8,15 +8,28 @@
 
 /* ----------------------------------------------------------------------
    fix ID group acoustic/mindlin N frequency f amplitude U0 source src ...
+     src = group-ID | wall <fix wall/gran ID> | mesh <fix mesh/surface ID>
 
    The LAMMPS fix of the same name (doc/fix_acoustic_mindlin.rst) for pair
-   style gran with tangential history/acoustic, first version: grain
-   sources (a group), grain-grain contacts of the fix group, stiffness
-   hertz E nu, solved on rank 0 by the C++98 facade of the ACOUSTIC
-   numerics (acoustic_gathered_drive.h), each contact's factor by
-   contact_mindlin_factor (acoustic_contact_factor.h), evaluated from the
-   lower to the higher atom ID so that both copies of a contact across
-   processors get the same bits.  No walls, no meshes, no restart yet.
+   style gran with tangential history/acoustic: grain sources (a group) or
+   a wall source, the grain-grain contacts of the fix group and the
+   contacts of its grains with every fix wall/gran (primitive walls, and
+   each mesh of a mesh wall: nodes of infinite mass, the source wall moving
+   with the drive, the others clamped), stiffness hertz E nu.  The
+   contacts are walked and gathered by AcousticLiggghtsNetwork
+   (acoustic_liggghts_network.h, shared with the computes), solved on rank
+   0 by the C++98 facade of the ACOUSTIC numerics
+   (acoustic_gathered_drive.h), and each contact's factor is
+   contact_mindlin_factor's (acoustic_contact_factor.h), evaluated from the
+   lower to the higher atom ID (a wall second) so that both copies of a
+   contact across processors get the same bits; 1 - s goes into the pair's
+   or the wall's contact history, which LIGGGHTS's restart files keep.
+
+   What differs from LAMMPS (doc/Using_ACOUSTIC_in_LIGGGHTS.rst): a mesh
+   source is "source mesh <ID>" and needs keyword direction (a mesh has no
+   single normal); stiffness hertz E nu is required (no stiffness pair);
+   no damping, solver, reuse or per-atom output yet.  Define the fix after
+   the fix wall/gran of a mesh (an ERROR says so).
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -29,6 +42,7 @@ FixStyle(acoustic/mindlin,FixAcousticMindlin)
 #define LMP_FIX_ACOUSTIC_MINDLIN_H
 
 #include "fix.h"
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -46,6 +60,9 @@ class FixAcousticMindlin : public Fix {
 
  private:
   int source_group, source_groupbit;
+  std::string source_wall_id;   // source wall <fix-ID> or source mesh <fix-ID>, else empty
+  int source_wall;              // its index in the network's walls, or -1
+  bool source_is_mesh;
   double frequency, amplitude;
   double direction[3];
   bool direction_given;

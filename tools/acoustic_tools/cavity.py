@@ -421,3 +421,262 @@ def portion_force_series(snapshots, y_bottom, y_top, n=10, ycol="v_ycontact", fc
     snap = np.repeat(np.arange(nsnap), counts)
     forces = np.bincount(snap * n + index, weights=force, minlength=nsnap * n)
     return steps, forces.reshape(nsnap, n)
+
+
+# ---------------------------------------------------------------------------
+# zeros: records in which no grain touches the wall (or a portion of it)
+
+def zero_fraction(values, tol=0.0):
+    """The fraction of the finite records of values (any shape) that are
+    zero (|value| <= tol): the mass at F = 0 of a PDF"""
+    v = np.asarray(values, float)
+    v = v[np.isfinite(v)]
+    return float(np.mean(np.abs(v) <= tol)) if v.size else np.nan
+
+
+def fit_eq7_with_zeros(values, tol=0.0):
+    """Eq. 7 fitted to the records as the histograms show them: the values
+    are scaled by the mean of all the records (zeros included); the zero
+    records are a mass p0 at F = 0 (their maximum-likelihood weight in the
+    mixture p0 delta(F) + (1 - p0) Eq. 7 is their fraction), Eq. 7 is fitted
+    by maximum likelihood to the positive ones.  Returns {"p0", "mu",
+    "sigma", "f0", "n", "n_positive", "mean"} (mu, sigma, f0 of the scaled
+    values; NaN when fewer than 10 are positive)."""
+    v = np.asarray(values, float).ravel()
+    v = v[np.isfinite(v)]
+    mean = float(v.mean()) if v.size else np.nan
+    out = {"p0": zero_fraction(v, tol), "n": int(v.size), "mean": mean, "mu": np.nan, "sigma": np.nan,
+           "f0": np.nan}
+    positive = v[v > tol]
+    out["n_positive"] = int(positive.size)
+    if positive.size >= 10 and mean > 0:
+        out["mu"], out["sigma"], out["f0"] = (float(x) for x in fit_trunc_lognormal(positive / mean))
+    return out
+
+
+def pdf_with_zeros(values, edges, tol=0.0):
+    """The histogram of values / mean(all values) with the zero records
+    taken out: (bin centres, density of the positive records normalised to
+    1 - p0, p0), so that (1 - p0) Eq. 7 of fit_eq7_with_zeros is drawn
+    against it and p0 is the mass at 0"""
+    v = np.asarray(values, float).ravel()
+    v = v[np.isfinite(v)]
+    edges = np.asarray(edges, float)
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    if v.size == 0 or not v.mean() > 0:
+        return centres, np.full(len(centres), np.nan), np.nan
+    p0 = zero_fraction(v, tol)
+    scaled = v[v > tol] / v.mean()
+    counts, _ = np.histogram(scaled, bins=edges)
+    density = counts / (v.size * np.diff(edges))
+    return centres, density, p0
+
+
+# ---------------------------------------------------------------------------
+# stationarity: the first half of a record against the second
+
+def stationarity(series, blocks=10):
+    """First half against second half of a record (time along axis 0; a 2D
+    array: each column): the means, their difference over its standard
+    error (each half's error from `blocks` block means, which holds for a
+    correlated series) and the coefficients of variation of each half.
+    Returns {"mean1", "mean2", "z", "cv1", "cv2", "rel"} (arrays for a 2D
+    input; rel = (mean2 - mean1) / the mean of both)"""
+    x = np.asarray(series, float)
+    one = x.ndim == 1
+    if one:
+        x = x[:, None]
+    half = len(x) // 2
+    a, b = x[:half], x[half:2 * half]
+    n = half // blocks
+    if n < 1:
+        raise ValueError(f"{len(x)} records are too few for {blocks} blocks per half")
+
+    def block_sem(part):
+        means = part[:n * blocks].reshape(blocks, n, -1).mean(axis=1)
+        return means.std(axis=0, ddof=1) / math.sqrt(blocks)
+
+    m1, m2 = a.mean(axis=0), b.mean(axis=0)
+    s = np.hypot(block_sem(a), block_sem(b))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        z = np.where(s > 0, (m2 - m1) / np.where(s > 0, s, 1.0), np.where(m2 == m1, 0.0, np.inf))
+        cv1, cv2 = a.std(axis=0) / m1, b.std(axis=0) / m2
+        rel = (m2 - m1) / (0.5 * (m1 + m2))
+    out = {"mean1": m1, "mean2": m2, "z": z, "cv1": cv1, "cv2": cv2, "rel": rel}
+    return {k: float(v[0]) for k, v in out.items()} if one else out
+
+
+# ---------------------------------------------------------------------------
+# Eq. 5: the mean force and the vortex
+
+PAPER_EQ5 = (0.88, 0.5)          # paper 004 Fig. 4: c1, c2 of Eq. 5
+
+
+def fit_eq5(ell_over_L, Fnorm):
+    """Eq. 5, F/(PLd) = c1 - c2 ell/L, by least squares: ((c1, c2),
+    (s_c1, s_c2), R^2); the points with a missing value are left out"""
+    x = np.asarray(ell_over_L, float)
+    y = np.asarray(Fnorm, float)
+    keep = np.isfinite(x) & np.isfinite(y)
+    x, y = x[keep], y[keep]
+    if len(x) < 3:
+        raise ValueError(f"Eq. 5 needs 3 points or more, got {len(x)}")
+    A = np.column_stack([np.ones_like(x), -x])
+    p, res, _, _ = np.linalg.lstsq(A, y, rcond=None)
+    r = y - A @ p
+    dof = max(1, len(x) - 2)
+    cov = np.linalg.inv(A.T @ A) * (r @ r) / dof
+    r2 = 1.0 - (r @ r) / np.sum((y - y.mean()) ** 2)
+    return (float(p[0]), float(p[1])), (float(np.sqrt(cov[0, 0])), float(np.sqrt(cov[1, 1]))), float(r2)
+
+
+# ---------------------------------------------------------------------------
+# meso scale: portions of a given size
+
+def central_portions(n, low=0.2, high=0.9):
+    """the 0-based indices of the portions (n equal, bottom first) that lie
+    between low and high of the height: portions 3..9 of 10 (paper 004
+    Fig. 14b) for the defaults, the middle one of 3"""
+    eps = 1e-9
+    return [i for i in range(n) if i / n >= low - eps and (i + 1) / n <= high + eps]
+
+
+# ---------------------------------------------------------------------------
+# the local rheology (paper 004 Sec. III B, App. C: Eqs. 16-20)
+
+PAPER_MU_I = (0.12, 0.40, 0.13)  # mu_1, mu_2, I_0 of Eq. 20
+
+
+def mu_I_model(I, mu1, mu2, I0):
+    """Eq. 20: mu_th(I) = mu1 + (mu2 - mu1) / (1 + I0 / I)"""
+    I = np.asarray(I, float)
+    return mu1 + (mu2 - mu1) / (1.0 + I0 / I)
+
+
+def strain_rate_2d(x, y, vx, vy):
+    """The strain-rate tensor D = (grad v + grad v^T) / 2 of a velocity field
+    on a regular grid (x (nx,), y (ny,), vx, vy (ny, nx)) by centred
+    differences: (Dxx, Dyy, Dxy), each (ny, nx); NaN next to a NaN"""
+    dvx_dy, dvx_dx = np.gradient(np.asarray(vx, float), y, x)
+    dvy_dy, dvy_dx = np.gradient(np.asarray(vy, float), y, x)
+    return dvx_dx, dvy_dy, 0.5 * (dvx_dy + dvy_dx)
+
+
+def local_rheology(sxx, syy, sxy, Dxx, Dyy, Dxy, d, rho_p):
+    """Paper 004's Eqs. 16-19 applied to the planar fields, as 3x3 tensors
+    with no z component (the contact stress of spheres whose centres lie in
+    a plane has sigma_zz = 0; D_zz = 0): sigma = p I_3 + sigma' with the
+    stress counted positive in compression, p = Tr(sigma) / 3; ||A|| =
+    sqrt(Tr(A A^T) / 2); I = d sqrt(rho_p) ||D'|| / sqrt(p) (Eq. 18);
+    mu_loc = -Tr(sigma' D') / 3 / (p ||D'||) (Eq. 19, its sign such that a
+    stress that resists the deformation, i.e. dissipates, gives mu_loc > 0:
+    the paper's Love-Weber sum f_c (x) l_c is negative in compression).  For
+    a simple shear vx = gamma y with in-plane pressure p2 = (sxx + syy) / 2
+    and the resisting shear stress sxy = -tau (compression positive) this
+    is mu_loc = tau / p2 and I = sqrt(3/8) d gamma sqrt(rho_p / p2).
+    sxx, syy, sxy: stress with compression positive (Pa); returns (I,
+    mu_loc), NaN where p <= 0 or D' = 0."""
+    sxx, syy, sxy = (np.asarray(a, float) for a in (sxx, syy, sxy))
+    Dxx, Dyy, Dxy = (np.asarray(a, float) for a in (Dxx, Dyy, Dxy))
+    p = (sxx + syy) / 3.0
+    trD = (Dxx + Dyy) / 3.0
+    # deviators (zz components -p and -trD)
+    s_xx, s_yy, s_zz = sxx - p, syy - p, -p
+    d_xx, d_yy, d_zz = Dxx - trD, Dyy - trD, -trD
+    normD = np.sqrt((d_xx ** 2 + d_yy ** 2 + d_zz ** 2 + 2 * Dxy ** 2) / 2.0)
+    contraction = s_xx * d_xx + s_yy * d_yy + s_zz * d_zz + 2 * sxy * Dxy
+    with np.errstate(invalid="ignore", divide="ignore"):
+        good = (p > 0) & (normD > 0)
+        I = np.where(good, d * np.sqrt(rho_p) * normD / np.sqrt(np.where(p > 0, p, 1.0)), np.nan)
+        mu = np.where(good, -contraction / 3.0 / (np.where(good, p * normD, 1.0)), np.nan)
+    return I, mu
+
+
+def fit_mu_I(I, mu):
+    """Eq. 20 fitted by least squares to points (I, mu_loc) (ln I0 the
+    fitted parameter): ((mu1, mu2, I0), (errors))"""
+    I = np.asarray(I, float)
+    mu = np.asarray(mu, float)
+    keep = np.isfinite(I) & np.isfinite(mu) & (I > 0)
+    I, mu = I[keep], mu[keep]
+    if len(I) < 4:
+        raise ValueError(f"Eq. 20 has 3 parameters; {len(I)} points are too few")
+    order = np.argsort(I)
+    q = max(1, len(I) // 5)
+
+    def model(x, a, b, c):
+        return a + (b - a) / (1.0 + np.exp(c) / x)
+
+    p0 = (mu[order[:q]].mean(), mu[order[-q:]].mean(), math.log(np.median(I)))
+    p, cov = optimize.curve_fit(model, I, mu, p0=p0, maxfev=20000)
+    err = np.sqrt(np.diag(cov))
+    return (p[0], p[1], math.exp(p[2])), (err[0], err[1], math.exp(p[2]) * err[2])
+
+
+def stress_and_velocity_fields(columns, bin_area, thickness):
+    """The time-averaged fields of in.cavity's TAG.stress (fix ave/chunk
+    norm none on bins of d: per bin the sums over its grains of
+    c_satom[1], [2], [4] and of vx, vy, and Ncount): (x, y, sxx, syy, sxy,
+    vx, vy) on the grid (to_grid), the stress with compression positive in
+    Pa (the sums of -W over the bin's area x thickness), the velocity the
+    mean of the bin's grains; NaN in empty bins"""
+    count = np.asarray(columns["Ncount"], float)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        vx = np.where(count > 0, columns["vx"] / np.where(count > 0, count, 1.0), np.nan)
+        vy = np.where(count > 0, columns["vy"] / np.where(count > 0, count, 1.0), np.nan)
+    volume = bin_area * thickness
+    s = [np.where(count > 0, -np.asarray(columns[name], float) / volume, np.nan)
+         for name in ("c_satom[1]", "c_satom[2]", "c_satom[4]")]
+    x, y, sxx = to_grid(columns["Coord1"], columns["Coord2"], s[0])
+    grids = [to_grid(columns["Coord1"], columns["Coord2"], v)[2] for v in (s[1], s[2], vx, vy)]
+    return (x, y, sxx, *grids)
+
+
+def mean_blocks(blocks, first_step=None):
+    """The plain mean over the blocks of lammps_output.read_ave_chunk (those
+    with timestep > first_step if given) of every column: for norm none
+    (sums per chunk), where time_average_chunks's count weighting does not
+    apply"""
+    if first_step is not None:
+        blocks = [(step, cols) for step, cols in blocks if step > first_step]
+    if not blocks:
+        raise ValueError("no block to average")
+    return {name: np.mean([cols[name] for _, cols in blocks], axis=0) for name in blocks[0][1]}
+
+
+# ---------------------------------------------------------------------------
+# where the drive falls in the vibration network's spectrum
+
+def read_modes_histogram(path):
+    """The last histogram of in.cavity's TAG.modes.hist (fix ave/time mode
+    vector of compute vibration/modes's bins): (bin centres (Hz), density)"""
+    rows, block = [], []
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        words = line.split()
+        if len(words) == 2:
+            block = []
+            rows.append(block)
+        else:
+            block.append((float(words[1]), float(words[2])))
+    if not rows or not rows[-1]:
+        raise ValueError(f"no histogram in {path}")
+    data = np.array(rows[-1])
+    return data[:, 0], data[:, 1]
+
+
+def spectrum_position(centres, density, freq, top=0.999):
+    """Where freq falls in a density of states on equal bins (centres,
+    density normalised over the bins): (the fraction of the modes below
+    freq, the frequency below which the fraction `top` of them lie), both
+    linearly interpolated in the cumulative distribution"""
+    centres = np.asarray(centres, float)
+    density = np.clip(np.asarray(density, float), 0.0, None)
+    width = np.diff(centres).mean() if len(centres) > 1 else 1.0
+    edges = np.concatenate([[centres[0] - 0.5 * width], centres + 0.5 * width])
+    cumulative = np.concatenate([[0.0], np.cumsum(density * width)])
+    cumulative /= cumulative[-1]
+    below = float(np.interp(freq, edges, cumulative))
+    band = float(np.interp(top, cumulative, edges))
+    return below, band

@@ -5,11 +5,22 @@ parameters, wall_seconds) and the recordings TAG.wall.txt, TAG.contacts,
 TAG.flow, TAG.us.txt) into the tables and figures of its RESULTS.md
 (acoustic_tools.cavity_study is the command line).
 
-  analyse, read_runs, block_error   the measurements of each run (cavity)
-  scan_fit                          the Eq. 4 fit of the scan set
+  analyse, read_runs, block_error   the measurements of each run (cavity):
+                                    F/(PLd), ell/L, <Delta t_c> in s and in
+                                    d/U, the zero records per scale, Eq. 7
+                                    with the zeros apart, the stationarity
+                                    (first half against second half), the
+                                    local mu(I) from TAG.stress
+  scan_fit, eq5_fit, mu_I_fit       Eq. 4 over a scan, Eq. 5, Eq. 20
+  by_im                             mean and standard error over the runs of
+                                    one I_M (packings and (N_U, N_P) pairs)
   print_tables                      the markdown tables on stdout
   figures                           the figures (cavity_figures)
   collect, draw                     what study.py collect and study.py figures do
+
+The H/d = 10 study (sets scan, paper, size, us) and paper 004's cavity of
+issue 43 (sets h30, h30seeds: the scan and its packings; h30sens; h30us)
+are collected side by side.
 """
 import json
 import os
@@ -46,7 +57,8 @@ def analyse(run, settings, p):
     C = cavity.autocorrelation(F, max_lag)
     C_portions = np.array([cavity.autocorrelation(portions[:, i], max_lag) for i in range(10)])
     dtc_portions, dtc_mean = cavity.portion_correlation_times(portions, dt_rec, max_lag)
-    r = {"run": f"{settings['set']}/{settings['name']}", "I_M": p["I_M"], "NP": p["NP"],
+    r = {"run": f"{settings['set']}/{settings['name']}", "set": settings["set"], "I_M": p["I_M"], "NP": p["NP"],
+         "seed": settings.get("seed", 1), "walls": p.get("walls", "smooth"), "LH": p.get("LH", 5),
          "NU": p["NU"], "Hd": p["Hd"], "freq": p["freq"], "grains": int(p["grains"]), "records": len(F),
          "recorded_HU": (p["nshear"] - p["nskip"]) * p["dt"] * p["U"] / p["H"],
          "recorded_s": (p["nshear"] - p["nskip"]) * p["dt"], "wall_s": p["wall_seconds"],
@@ -57,10 +69,20 @@ def analyse(run, settings, p):
          "cv_wall": float(F.std() / F.mean())}
     skew = np.mean((F - F.mean()) ** 3) / F.std() ** 3
     r["skew_wall"] = float(skew)
+    # the memory in seconds and in d/U (the passing period of the lid's roughness)
+    r["dtc_mean_s"], r["dtc_mean_dU"] = r["dtc_mean"], r["dtc_mean"] / period
+    r["dtc_wall_s"], r["dtc_wall_dU"] = r["dtc_wall"], r["dtc_wall"] / period
+    # stationarity: the first half of every record against the second
+    st = cavity.stationarity(F)
+    stp = cavity.stationarity(portions)
+    r["stationarity"] = {"F_z": st["z"], "F_rel": st["rel"], "F_cv1": st["cv1"], "F_cv2": st["cv2"],
+                         "portions_max_abs_z": float(np.nanmax(np.abs(stp["z"][np.isfinite(stp["z"])]))
+                                                     if np.isfinite(stp["z"]).any() else np.nan),
+                         "portions_z": [float(z) for z in stp["z"]]}
     # vortex centre from the velocity field after tskip
     flow = os.path.join(run, f"{tag}.flow")
     if os.path.exists(flow):
-        cols, counts = cavity.time_average_chunks(lammps_output.read_ave_chunk(flow), first_step=p["nskip"])
+        cols, counts = cavity.time_average_chunks(lammps_output.read_ave_chunk(flow), first_step=p["nskip"] + 1)
         inside = (counts > 0) & (cols["Coord1"] > 0) & (cols["Coord1"] < p["L"]) & (cols["Coord2"] > 0)
         vx = np.where(inside, cols["vx"], np.nan)
         vy = np.where(inside, cols["vy"], np.nan)
@@ -72,28 +94,84 @@ def analyse(run, settings, p):
         field = (cols["Coord1"], cols["Coord2"], vx, vy, p["L"], centre)
     # three scales of force: samples for the PDFs and Eq. 7 fits
     snaps = lammps_output.read_dump(os.path.join(run, f"{tag}.contacts"))
-    f = np.concatenate([s["v_fwall"] for s in snaps if len(s)])
-    f = f[f > 0]
+    nonempty = [s["v_fwall"] for s in snaps if len(s)]
+    f_all = np.concatenate(nonempty) if nonempty else np.zeros(0)
+    f = f_all[f_all > 0]
     r["contacts_per_record"] = float(len(f) / max(1, len(snaps)))
-    samples = {"particle": f, "wall": F, "meso": portions[:, 2:9]}
+    # the meso scale of paper 004: portions of 3 d (its H/10 at H/d = 30):
+    # the deck's 10 portions at H/d = 30, else round(H/3d) portions from the
+    # contacts' heights; the central ones (3..9 of 10, cavity.central_portions)
+    if int(round(p["Hd"])) == 30:
+        meso = portions
+    else:
+        ybot = 0.5 * p["d"]
+        _, meso = cavity.portion_force_series(snaps, ybot, ybot + wall["h"], n=max(1, int(round(p["Hd"] / 3))))
+    central = list(range(2, 9)) if meso.shape[1] == 10 else cavity.central_portions(meso.shape[1])
+    r["meso_portions"], r["meso_size_d"] = int(meso.shape[1]), float(p["Hd"] / meso.shape[1])
+    # zero records per scale: records of the whole wall with F = 0, of a
+    # central portion with F_i = 0, snapshots with no grain on the wall,
+    # contacts with f = 0
+    r["zeros"] = {"wall": cavity.zero_fraction(F), "meso": cavity.zero_fraction(meso[:, central]),
+                  "particle_records": float(1 - len(nonempty) / max(1, len(snaps))),
+                  "particle_contacts": cavity.zero_fraction(f_all)}
+    # Eq. 7 at each scale fitted to what the histograms show: the records
+    # scaled by the mean of all of them, the zeros a mass p0 at 0, Eq. 7 on
+    # the positive ones (cavity.fit_eq7_with_zeros); the meso scale pools
+    # the central portions, each scaled by its own mean
+    meso_scaled = []
+    for i in central:
+        column = meso[:, i]
+        if column.mean() > 0:
+            meso_scaled.append(column / column.mean())
+    samples = {"particle": f_all, "wall": F,
+               "meso": np.concatenate(meso_scaled) if meso_scaled else np.zeros(0)}
     for scale, v in samples.items():
-        v = np.asarray(v, float)
-        if v.ndim == 2:                       # portions: each by its own mean, the untouched ones left out
-            v = v[:, v.mean(axis=0) > 0]
-            scaled = (v / v.mean(axis=0)).ravel()
-        else:
-            scaled = v / v.mean()
+        fit = cavity.fit_eq7_with_zeros(v)
+        r[f"eq7_{scale}"] = fit
+        r[f"fit_{scale}"] = [fit["mu"], fit["sigma"], fit["f0"]]
+    high = _modes(run)
+    r["highest_mode"] = np.nan if high is None else high
+    # where the drive falls in the network's spectrum (TAG.modes.hist, dense or kpm)
+    r["modes_below_drive"], r["band_top"] = np.nan, np.nan
+    hist = os.path.join(run, f"{tag}.modes.hist")
+    if os.path.exists(hist) and p["freq"] > 0:
         try:
-            r[f"fit_{scale}"] = [float(x) for x in cavity.fit_trunc_lognormal(scaled)]
+            r["modes_below_drive"], r["band_top"] = cavity.spectrum_position(*cavity.read_modes_histogram(hist), p["freq"])
         except ValueError:
-            r[f"fit_{scale}"] = [np.nan] * 3
+            pass
     us = os.path.join(run, f"{tag}.us.txt")
     if os.path.exists(us):
         u = lammps_output.read_ave_time(us)
         r["mu_ratio"] = float(u["mu_ratio_mean"].mean())
         r["frac_below_half"] = float(u["frac_below_half"].mean())
-    return r, {"F": F, "portions": portions, "f": f, "C": C, "C_portions": C_portions, "dt_rec": dt_rec,
-               "field": field if os.path.exists(flow) else None}
+    # the local rheology (Eqs. 16-20) from the stress and velocity fields
+    rheology = None
+    stress = os.path.join(run, f"{tag}.stress")
+    if os.path.exists(stress):
+        try:
+            rheology = local_rheology(stress, p, wall["h"].mean())
+            r["mu_I_points"] = int(np.isfinite(rheology["region"][1]).sum())
+        except ValueError:
+            rheology = None
+    return r, {"F": F, "portions": portions, "meso": meso, "central": central, "f": f_all, "C": C,
+               "C_portions": C_portions, "dt_rec": dt_rec, "period": period,
+               "field": field if os.path.exists(flow) else None, "rheology": rheology}
+
+
+def local_rheology(path, p, h):
+    """The local mu(I) of one run from its TAG.stress (blocks after nskip):
+    {"x", "y", "I", "mu" (grids), "region": (I, mu) of paper 004 Fig. 19's
+    region (the upper half of the packing, a band L/2 wide centred in x)}"""
+    blocks = lammps_output.read_ave_chunk(path)
+    cols = cavity.mean_blocks(blocks, first_step=p["nskip"])
+    x, y, sxx, syy, sxy, vx, vy = cavity.stress_and_velocity_fields(cols, p["d"] * p["d"], p["d"])
+    Dxx, Dyy, Dxy = cavity.strain_rate_2d(x, y, vx, vy)
+    rho_p = 2500.0
+    I, mu = cavity.local_rheology(sxx, syy, sxy, Dxx, Dyy, Dxy, p["d"], rho_p)
+    X, Y = np.meshgrid(x, y)
+    L = p["L"]
+    region = (X > 0.25 * L) & (X < 0.75 * L) & (Y > 0.5 * h) & (Y < h - p["d"])
+    return {"x": x, "y": y, "I": I, "mu": mu, "region": (I[region], mu[region]), "h": h, "L": L}
 
 
 def read_runs(top):
@@ -113,28 +191,125 @@ def g(x, digits=3):
     return "—" if x is None or not np.isfinite(x) else f"{x:.{digits}g}"
 
 
-def print_tables(runs, fit):
-    """The markdown table of every run, the Eq. 4 fit of the scan (fit:
-    scan_fit's) and the table of the ultrasound set (us/<base>_f0 beside
-    us/<base>_f70): the text (each line as print writes it)."""
+# the sets of the H/d = 30 scan (paper 004's cavity): the scan and its packings
+H30_SCAN = ("h30/", "h30seeds/")
+
+
+def _select(runs, prefixes):
+    return {n: v for n, v in runs.items() if n.startswith(tuple(prefixes))}
+
+
+def _mean_sem(values):
+    v = np.asarray([x for x in values if x is not None and np.isfinite(x)], float)
+    if len(v) == 0:
+        return np.nan, np.nan, 0
+    return float(v.mean()), float(v.std(ddof=1) / np.sqrt(len(v))) if len(v) > 1 else np.nan, len(v)
+
+
+def by_im(runs, prefixes=H30_SCAN, digits=2):
+    """The runs of the sets prefixes grouped by I_M (to `digits` significant
+    digits): {I_M: {quantity: (mean, standard error, runs)}} over packings
+    and (N_U, N_P) pairs; quantities Fnorm, ell_over_L, dtc_mean_dU,
+    dtc_mean_s, cv_wall, skew_wall, the Eq. 7 wall and meso parameters and
+    the zero fractions, plus "pairs" (the (N_U, N_P)) and "seeds"."""
+    groups = {}
+    for name, (r, _) in _select(runs, prefixes).items():
+        groups.setdefault(float(f"{r['I_M']:.{digits}g}"), []).append(r)
+    out = {}
+    for im, rows in sorted(groups.items()):
+        q = {}
+        for key in ("Fnorm", "ell_over_L", "dtc_mean_dU", "dtc_mean_s", "cv_wall", "skew_wall"):
+            q[key] = _mean_sem([row.get(key, np.nan) for row in rows])
+        for scale in ("wall", "meso", "particle"):
+            for k in ("mu", "sigma", "f0", "p0"):
+                q[f"eq7_{scale}_{k}"] = _mean_sem([row[f"eq7_{scale}"][k] for row in rows])
+        q["pairs"] = sorted({(row["NU"], row["NP"]) for row in rows})
+        q["seeds"] = sorted({row.get("seed", 1) for row in rows})
+        q["runs"] = len(rows)
+        out[im] = q
+    return out
+
+
+def _pm(value, digits=3):
+    mean, sem, n = value
+    if not np.isfinite(mean):
+        return "—"
+    return f"{mean:.{digits}g}" + (f" ± {sem:.2g}" if np.isfinite(sem) else "") + ("" if n > 1 else " (1 run)")
+
+
+def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
+    """The markdown tables: every run; the Eq. 4 fits (fit: the H/d = 10
+    scan's, fit30: the H/d = 30 scan's, scan_fit's form); Eq. 5 (eq5_fit's);
+    the H/d = 30 scan by I_M with errors over packings and pairs; its zero
+    records, Eq. 7 with the zeros apart and stationarity per run; the
+    sensitivity set; the ultrasound sets; Eq. 20 (mu_fit).  Returns the
+    text (each line as print writes it)."""
     lines = []
 
     def print(*parts):
         lines.append(" ".join(str(part) for part in parts) + "\n")
-    print("| run | H/d | N_P | N_U | I_M | grains | recorded (H/U; s) | F/(PLd) | ℓ/L | Φ* | ⟨Δt_c⟩ (d/U) | Δt_c wall (d/U) "
+    print("| run | H/d | N_P | N_U | I_M | grains | recorded (H/U; s) | F/(PLd) | ℓ/L | Φ* | ⟨Δt_c⟩ (d/U; ms) | Δt_c wall (d/U) "
           "| CV, skewness of F | Eq. 7 wall μ, σ, f0 | wall time (s) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-    for name, (r, _) in sorted(runs.items(), key=lambda kv: (kv[0].split("/")[0], kv[1][0]["I_M"])):
+    for name, (r, _) in sorted(runs.items(), key=lambda kv: (kv[0].split("/")[0], kv[1][0]["I_M"], kv[0])):
         fw = r["fit_wall"]
         print(f"| {name} | {r['Hd']:g} | {r['NP']:g} | {r['NU']:g} | {r['I_M']:.3g} | {r['grains']} "
               f"| {r['recorded_HU']:.0f}; {r['recorded_s']:.3g} | {r['Fnorm']:.3f} ± {r['Fnorm_sem']:.3f} | {g(r.get('ell_over_L'), 2)} "
-              f"| {r['phi3d']:.3f} | {g(r['dtc_mean'] / r['period'], 2)} | {g(r['dtc_wall'] / r['period'], 2)} "
-              f"| {r['cv_wall']:.2f}, {r['skew_wall']:.2f} | {fw[0]:.2f}, {fw[1]:.2f}, {fw[2]:.2g} | {r['wall_s']:.0f} |")
-    if fit is not None:
-        (r1, r2, i0), (e1, e2, ei), chi2 = fit
-        print(f"\nEq. 4 fit of the scan (weighted by the block errors, errors scaled by sqrt(chi2/dof) = "
-              f"{np.sqrt(chi2):.2f}): r1 = {r1:.3f} ± {e1:.3f}, r2 = {r2:.3f} ± {e2:.3f}, "
-              f"I0 = {i0:.4f} ± {ei:.4f} (paper 004: 0.53, 0.86, 0.02)")
+              f"| {r['phi3d']:.3f} | {g(r['dtc_mean_dU'], 2)}; {g(1e3 * r['dtc_mean_s'], 2)} | {g(r['dtc_wall_dU'], 2)} "
+              f"| {r['cv_wall']:.2f}, {r['skew_wall']:.2f} | {g(fw[0], 2)}, {g(fw[1], 2)}, {g(fw[2], 2)} | {r['wall_s']:.0f} |")
+    for label, f in (("the H/d = 10 scan", fit), ("the H/d = 30 scan (sets h30, h30seeds)", fit30)):
+        if f is not None:
+            (r1, r2, i0), (e1, e2, ei), chi2 = f
+            print(f"\nEq. 4 fit of {label} (weighted by the block errors, errors scaled by sqrt(chi2/dof) = "
+                  f"{np.sqrt(chi2):.2f}): r1 = {r1:.3f} ± {e1:.3f}, r2 = {r2:.3f} ± {e2:.3f}, "
+                  f"I0 = {i0:.4f} ± {ei:.4f} (paper 004: 0.53, 0.86, 0.02)")
+    if eq5 is not None:
+        (c1, c2), (e1, e2), r2, n = eq5
+        print(f"\nEq. 5 fit of the H/d = 30 runs with I_M > 1e-2 ({n} runs): c1 = {c1:.3f} ± {e1:.3f}, "
+              f"c2 = {c2:.3f} ± {e2:.3f}, R² = {r2:.2f} (paper 004 Fig. 4: 0.88, 0.5, R² = 0.96)")
+    groups = by_im(runs)
+    if groups:
+        print("\nThe H/d = 30 scan by I_M (mean ± standard error over the packings and (N_U, N_P) pairs):\n")
+        print("| I_M | runs | (N_U, N_P) | seeds | F/(PLd) | ℓ/L | ⟨Δt_c⟩ (d/U) | ⟨Δt_c⟩ (ms) | CV of F | skewness "
+              "| Eq. 7 wall μ | σ | f0 | p0 wall | p0 meso |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+        for im, q in groups.items():
+            ms = tuple(1e3 * x if i < 2 else x for i, x in enumerate(q["dtc_mean_s"]))
+            print(f"| {im:g} | {q['runs']} | {', '.join(f'({a:g}, {b:.3g})' for a, b in q['pairs'])} "
+                  f"| {', '.join(str(x) for x in q['seeds'])} | {_pm(q['Fnorm'])} | {_pm(q['ell_over_L'], 2)} "
+                  f"| {_pm(q['dtc_mean_dU'], 2)} | {_pm(ms, 2)} | {_pm(q['cv_wall'], 2)} | {_pm(q['skew_wall'], 2)} "
+                  f"| {_pm(q['eq7_wall_mu'], 2)} | {_pm(q['eq7_wall_sigma'], 2)} | {_pm(q['eq7_wall_f0'], 2)} "
+                  f"| {_pm(q['eq7_wall_p0'], 2)} | {_pm(q['eq7_meso_p0'], 2)} |")
+    print("\nZero records, Eq. 7 with the zeros apart (μ, σ, f0 of the positive records scaled by the mean of all; "
+          "p0 their fraction) and stationarity (z: the second half's mean minus the first's over its standard "
+          "error, for F and the largest |z| of the 10 portions; rel: the relative change of F̄):\n")
+    print("| run | meso portions (d) | p0 wall | p0 meso | records without contact | Eq. 7 particle μ, σ, f0 "
+          "| Eq. 7 meso μ, σ, f0 | Eq. 7 wall μ, σ, f0 | z F | rel F | max abs z portions |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for name, (r, _) in sorted(runs.items(), key=lambda kv: (kv[0].split("/")[0], kv[1][0]["I_M"], kv[0])):
+        z, st = r["zeros"], r["stationarity"]
+
+        def e7(scale):
+            f = r[f"eq7_{scale}"]
+            return f"{g(f['mu'], 2)}, {g(f['sigma'], 2)}, {g(f['f0'], 2)}"
+        print(f"| {name} | {r['meso_portions']} ({r['meso_size_d']:.2g}) | {z['wall']:.3f} | {z['meso']:.3f} "
+              f"| {z['particle_records']:.3f} | {e7('particle')} | {e7('meso')} | {e7('wall')} "
+              f"| {st['F_z']:.1f} | {st['F_rel']:.3f} | {st['portions_max_abs_z']:.1f} |")
+    sens = _select(runs, ("h30sens/",))
+    if sens:
+        print("\nSensitivity (h30sens) beside the h30 run of the same I_M and N_U:\n")
+        print("| run | beside | F/(PLd) | ℓ/L | ⟨Δt_c⟩ (d/U) | CV of F | Eq. 7 wall μ, σ, f0 |")
+        print("|---|---|---|---|---|---|---|")
+        for name, (r, _) in sorted(sens.items()):
+            base = next((n for n, (b, _) in runs.items() if n.startswith("h30/") and b["NU"] == r["NU"]
+                         and abs(b["NP"] / r["NP"] - 1) < 1e-3), None)
+            for label, row in ((name, r), (base, runs[base][0] if base else None)):
+                if row is None:
+                    continue
+                fw = row["fit_wall"]
+                print(f"| {label} | {'' if label != name else (base or '—')} | {row['Fnorm']:.3f} ± {row['Fnorm_sem']:.3f} "
+                      f"| {g(row.get('ell_over_L'), 2)} | {g(row['dtc_mean_dU'], 2)} | {row['cv_wall']:.2f} "
+                      f"| {g(fw[0], 2)}, {g(fw[1], 2)}, {g(fw[2], 2)} |")
     us = {n: r for n, (r, _) in runs.items() if n.startswith("us/")}
     if us:
         print("\n| I_M | F/(PLd) 0 / 70 kHz | ℓ/L 0 / 70 kHz | ⟨Δt_c⟩ (d/U) 0 / 70 kHz | CV of F 0 / 70 kHz "
@@ -146,26 +321,69 @@ def print_tables(runs, fit):
                 continue
             fa, fb = a["fit_wall"], b["fit_wall"]
             print(f"| {a['I_M']:.3g} | {a['Fnorm']:.3f} ± {a['Fnorm_sem']:.3f} / {b['Fnorm']:.3f} ± {b['Fnorm_sem']:.3f} | {g(a.get('ell_over_L'), 2)} / "
-                  f"{g(b.get('ell_over_L'), 2)} | {g(a['dtc_mean'] / a['period'], 2)} / {g(b['dtc_mean'] / b['period'], 2)} "
-                  f"| {a['cv_wall']:.2f} / {b['cv_wall']:.2f} | {fa[0]:.2f}, {fa[1]:.2f}, {fa[2]:.2g} / "
-                  f"{fb[0]:.2f}, {fb[1]:.2f}, {fb[2]:.2g} | {b.get('mu_ratio', np.nan):.3f}, "
+                  f"{g(b.get('ell_over_L'), 2)} | {g(a['dtc_mean_dU'], 2)} / {g(b['dtc_mean_dU'], 2)} "
+                  f"| {a['cv_wall']:.2f} / {b['cv_wall']:.2f} | {g(fa[0], 2)}, {g(fa[1], 2)}, {g(fa[2], 2)} / "
+                  f"{g(fb[0], 2)}, {g(fb[1], 2)}, {g(fb[2], 2)} | {b.get('mu_ratio', np.nan):.3f}, "
                   f"{b.get('frac_below_half', np.nan):.3f} |")
+    us30 = _select(runs, ("h30us/",))
+    if us30:
+        print("\nUltrasound at N_P = 1, H/d = 30 (h30us; mean ± standard error over the packings; the drive "
+              "against the network's highest mode at the end of each run):\n")
+        print("| N_U | I_M | f (kHz) | runs | F/(PLd) | ⟨Δt_c⟩ (d/U) | CV of F | Eq. 7 wall σ | highest mode (kHz) "
+              "| f / highest mode | modes below f | 99.9 % of the modes below (kHz) | mean μ*/μ |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+        groups = {}
+        for name, (r, _) in us30.items():
+            groups.setdefault((r["NU"], r["freq"]), []).append(r)
+        for (NU, freq), rows in sorted(groups.items()):
+            high = _mean_sem([row.get("highest_mode", np.nan) / 1e3 for row in rows])
+            ratio = _mean_sem([freq / row["highest_mode"] if row.get("highest_mode") else np.nan for row in rows])
+            print(f"| {NU:g} | {rows[0]['I_M']:.3g} | {freq / 1e3:g} | {len(rows)} | {_pm(_mean_sem([x['Fnorm'] for x in rows]))} "
+                  f"| {_pm(_mean_sem([x['dtc_mean_dU'] for x in rows]), 2)} | {_pm(_mean_sem([x['cv_wall'] for x in rows]), 2)} "
+                  f"| {_pm(_mean_sem([x['eq7_wall']['sigma'] for x in rows]), 2)} | {_pm(high, 3)} "
+                  f"| {'—' if freq == 0 else _pm(ratio, 2)} | {_pm(_mean_sem([x['modes_below_drive'] for x in rows]), 3)} "
+                  f"| {_pm(_mean_sem([x['band_top'] / 1e3 for x in rows]), 3)} "
+                  f"| {_pm(_mean_sem([x.get('mu_ratio', np.nan) for x in rows]), 3)} |")
+    if mu_fit is not None:
+        (m1, m2, i0), (e1, e2, ei), n = mu_fit
+        print(f"\nEq. 20 fit of the local μ(I) over the region of Fig. 19 of the runs with a stress field ({n} bins): "
+              f"μ1 = {m1:.3f} ± {e1:.3f}, μ2 = {m2:.3f} ± {e2:.3f}, I0 = {i0:.3g} ± {ei:.2g} (paper 004: 0.12, 0.40, 0.13)")
     return "".join(lines)
 
 
-def figures(runs, fit, figdir):
-    """Paper 004's Figs. 2, 3, 9, 10, 12, 13, 14 and Phi*(I_M) of the scan
-    set (cavity_figures) into figdir; fit: scan_fit's, drawn in Fig. 3."""
+def figures(runs, fit, figdir, fit30=None, eq5=None, mu_fit=None):
+    """Paper 004's figures into figdir: those of the H/d = 10 scan (Figs. 2,
+    3, 9, 10, 12, 13, 14, Phi*) and, when there are runs of the H/d = 30
+    scan, the same with the suffix _H30 and Figs. 4, 6, 8, 11, 19, 20"""
     os.makedirs(figdir, exist_ok=True)
     scan = {n: v for n, v in runs.items() if n.startswith("scan/")}
-    if not scan:
-        return
+    if scan:
+        _scan_figures(scan, fit, figdir, "", "H/d = 10, L/H = 5")
+    h30 = _select(runs, H30_SCAN)
+    if h30:
+        _scan_figures(h30, fit30, figdir, "_H30", "H/d = 30, L/H = 5")
+        _h30_figures(h30, figdir, eq5, mu_fit)
+
+
+def _one_per_im(runs):
+    """one run per I_M (2 digits): seed 1 and the largest N_U"""
+    best = {}
+    for n, (r, d) in runs.items():
+        im = float(f"{r['I_M']:.2g}")
+        key = (r.get("seed", 1) == 1, r["NU"])
+        if im not in best or key > best[im][0]:
+            best[im] = (key, n)
+    return [best[im][1] for im in sorted(best)]
+
+
+def _scan_figures(scan, fit, figdir, suffix, title):
     order = sorted(scan, key=lambda n: scan[n][0]["I_M"])
     IM = np.array([scan[n][0]["I_M"] for n in order])
     figs.fig3_vortex_and_force(IM, [scan[n][0].get("ell_over_L", np.nan) for n in order],
-                               [scan[n][0]["Fnorm"] for n in order], os.path.join(figdir, "fig3_force_vortex.png"),
-                               fit=None if fit is None else fit[0], title="H/d = 10, L/H = 5")
-    for n in (order[0], order[len(order) // 2], order[-1]):
+                               [scan[n][0]["Fnorm"] for n in order], os.path.join(figdir, f"fig3_force_vortex{suffix}.png"),
+                               fit=None if fit is None else fit[0], title=title)
+    one = _one_per_im(scan)
+    for n in (one[0], one[len(one) // 2], one[-1]):
         r, data = scan[n]
         if data["field"] is not None:
             xc, yc, vx, vy, L, centre = data["field"]
@@ -175,22 +393,56 @@ def figures(runs, fit, figdir):
                                   os.path.join(figdir, f"fig9_autocorrelation_{os.path.basename(n)}.png"),
                                   title=f"$I_M$ = {r['I_M']:.2g} (lag in d/U)")
     figs.fig10_correlation_times(IM, [np.array(scan[n][0]["dtc_portions"]) / scan[n][0]["period"] for n in order],
-                                 os.path.join(figdir, "fig10_correlation_times.png"), title="(in units of d/U)")
-    figs.fig12_particle_pdfs({scan[n][0]["I_M"]: scan[n][1]["f"] for n in order},
-                             os.path.join(figdir, "fig12_particle_pdfs.png"))
-    figs.fig13_wall_pdfs({scan[n][0]["I_M"]: scan[n][1]["F"] for n in order},
-                         os.path.join(figdir, "fig13_wall_pdfs.png"))
-    mid = order[len(order) // 2]
-    figs.fig14_meso_pdfs(scan[mid][1]["portions"], {scan[n][0]["I_M"]: scan[n][1]["portions"] for n in order},
-                         os.path.join(figdir, "fig14_meso_pdfs.png"), title=f"(a) at $I_M$ = {scan[mid][0]['I_M']:.2g}")
-    figs.fig_volume_fraction(IM, [scan[n][0]["phi3d"] for n in order], os.path.join(figdir, "phi_IM.png"))
+                                 os.path.join(figdir, f"fig10_correlation_times{suffix}.png"), title="(in units of d/U)")
+    figs.fig12_particle_pdfs({scan[n][0]["I_M"]: scan[n][1]["f"] for n in one},
+                             os.path.join(figdir, f"fig12_particle_pdfs{suffix}.png"),
+                             fits={scan[n][0]["I_M"]: scan[n][0]["eq7_particle"] for n in one})
+    figs.fig13_wall_pdfs({scan[n][0]["I_M"]: scan[n][1]["F"] for n in one}, os.path.join(figdir, f"fig13_wall_pdfs{suffix}.png"),
+                         fits={scan[n][0]["I_M"]: scan[n][0]["eq7_wall"] for n in one})
+    # Fig. 14 (a): the run nearest the paper's I_M = 1.2e-2
+    near = min(one, key=lambda n: abs(np.log(scan[n][0]["I_M"] / 1.2e-2)))
+    r = scan[near][0]
+    figs.fig14_meso_pdfs(scan[near][1]["meso"], {scan[n][0]["I_M"]: scan[n][1]["meso"] for n in one},
+                         os.path.join(figdir, f"fig14_meso_pdfs{suffix}.png"),
+                         title=f"portions of {r['meso_size_d']:.2g} d; (a) at $I_M$ = {r['I_M']:.2g}")
+    figs.fig_volume_fraction(IM, [scan[n][0]["phi3d"] for n in order], os.path.join(figdir, f"phi_IM{suffix}.png"))
+    figs.fig20_loglinear({scan[n][0]["I_M"]: scan[n][1]["f"] for n in one}, {scan[n][0]["I_M"]: scan[n][1]["F"] for n in one},
+                         os.path.join(figdir, f"fig20_loglinear{suffix}.png"),
+                         fits_particle={scan[n][0]["I_M"]: scan[n][0]["eq7_particle"] for n in one},
+                         fits_wall={scan[n][0]["I_M"]: scan[n][0]["eq7_wall"] for n in one})
+    figs.fig8_autocorrelation({scan[n][0]["I_M"]: (scan[n][1]["dt_rec"], scan[n][1]["C"], scan[n][1]["period"]) for n in one},
+                              os.path.join(figdir, f"fig8_autocorrelation{suffix}.png"), title=title)
 
 
-def scan_fit(runs):
-    """The Eq. 4 fit of F/(PLd) against I_M over the scan set (four runs or
-    more; None otherwise), weighted by the block errors: (parameters r1, r2,
-    I0, their errors scaled by sqrt(chi2/dof) when above 1, chi2/dof)."""
-    scan = [r for n, (r, _) in runs.items() if n.startswith("scan/")]
+def _h30_figures(h30, figdir, eq5, mu_fit):
+    rows = [r for r, _ in h30.values()]
+    figs.fig4_force_vortex([r.get("ell_over_L", np.nan) for r in rows], [r["Fnorm"] for r in rows],
+                           [r["I_M"] for r in rows], os.path.join(figdir, "fig4_force_vortex_H30.png"),
+                           fit=None if eq5 is None else eq5[0], title="H/d = 30")
+    groups = {}
+    for n, (r, d) in h30.items():
+        groups.setdefault(float(f"{r['I_M']:.2g}"), {}).setdefault((r["NU"], r["NP"]), []).append(d["f"])
+    pairs = {im: {k: np.concatenate(v) for k, v in g.items()} for im, g in groups.items() if len(g) > 1}
+    if pairs:
+        figs.fig11_particle_pairs(pairs, os.path.join(figdir, "fig11_particle_pairs_H30.png"))
+    points = {r["I_M"]: d["rheology"]["region"] for r, d in h30.values() if d.get("rheology")}
+    if points:
+        figs.fig19_mu_I(points, os.path.join(figdir, "fig19_mu_I_H30.png"), fit=None if mu_fit is None else mu_fit[0])
+        for target, label in ((1.2e-2, "a"), (6.1e-2, "b")):
+            cands = [(abs(np.log(r["I_M"] / target)), n) for n, (r, d) in h30.items() if d.get("rheology")]
+            n = min(cands)[1]
+            r, d = h30[n]
+            rh = d["rheology"]
+            figs.fig6_mu_map(rh["x"], rh["y"], rh["I"], rh["mu"], os.path.join(figdir, f"fig6{label}_mu_map_H30.png"),
+                             rh["L"], rh["h"], title=f"({label}) $I_M$ = {r['I_M']:.2g}, $N_U$ = {r['NU']:g}, $N_P$ = {r['NP']:.3g}")
+
+
+def scan_fit(runs, prefixes=("scan/",)):
+    """The Eq. 4 fit of F/(PLd) against I_M over the runs of the sets
+    prefixes (four runs or more; None otherwise), weighted by the block
+    errors: (parameters r1, r2, I0, their errors scaled by sqrt(chi2/dof)
+    when above 1, chi2/dof)."""
+    scan = [r for n, (r, _) in runs.items() if n.startswith(tuple(prefixes))]
     if len(scan) >= 4:
         I = np.array([r["I_M"] for r in scan])
         Fn = np.array([r["Fnorm"] for r in scan])
@@ -202,22 +454,69 @@ def scan_fit(runs):
     return None
 
 
+def eq5_fit(runs, prefixes=H30_SCAN, above=1e-2):
+    """Eq. 5 over the runs of prefixes with I_M > above (paper 004 Fig. 4):
+    ((c1, c2), errors, R^2, runs), or None with fewer than 3"""
+    rows = [r for n, (r, _) in runs.items() if n.startswith(tuple(prefixes)) and r["I_M"] > above
+            and np.isfinite(r.get("ell_over_L", np.nan))]
+    if len(rows) < 3:
+        return None
+    (c1, c2), err, r2 = cavity.fit_eq5([r["ell_over_L"] for r in rows], [r["Fnorm"] for r in rows])
+    return (c1, c2), err, r2, len(rows)
+
+
+def mu_I_fit(runs):
+    """Eq. 20 over the region of Fig. 19 of every run with a stress field:
+    ((mu1, mu2, I0), errors, bins), or None"""
+    I = [d["rheology"]["region"][0] for _, d in runs.values() if d.get("rheology")]
+    mu = [d["rheology"]["region"][1] for _, d in runs.values() if d.get("rheology")]
+    if not I:
+        return None
+    I, mu = np.concatenate(I), np.concatenate(mu)
+    keep = np.isfinite(I) & np.isfinite(mu) & (I > 0)
+    try:
+        params, errors = cavity.fit_mu_I(I[keep], mu[keep])
+    except (ValueError, RuntimeError):
+        return None
+    return params, errors, int(keep.sum())
+
+
+def _modes(run):
+    """the network's highest mode (Hz) from the logs of a run's pieces, or None"""
+    for name in sorted(os.listdir(run)):
+        if name.startswith("log."):
+            for line in open(os.path.join(run, name)):
+                if line.startswith("cavity modes") and "highest mode" in line:
+                    return float(line.split("highest mode")[1].split("Hz")[0])
+    return None
+
+
+def _fits(runs):
+    return (scan_fit(runs), scan_fit(runs, H30_SCAN), eq5_fit(runs), mu_I_fit(runs))
+
+
 def collect(top):
     """What study.py collect does: the tables on stdout and in top/tables.md,
-    summary.json (every run's row, the Eq. 4 fit) into top."""
+    summary.json (every run's row, the fits) into top."""
     runs = read_runs(top)
-    fit = scan_fit(runs)
-    text = print_tables(runs, fit)
+    fit, fit30, eq5, mu_fit = _fits(runs)
+    text = print_tables(runs, fit, fit30, eq5, mu_fit)
     print(text, end="")
     with open(os.path.join(top, "tables.md"), "w") as handle:
         handle.write(text)
+
+    def listed(f):
+        return None if f is None else [list(map(float, f[0])), list(map(float, f[1]))] + list(f[2:])
     with open(os.path.join(top, "summary.json"), "w") as f:
-        json.dump({"runs": {n: r for n, (r, _) in runs.items()},
-                   "eq4_fit": None if fit is None else [list(map(float, fit[0])), list(map(float, fit[1])), fit[2]]},
+        json.dump({"runs": {n: r for n, (r, _) in runs.items()}, "eq4_fit": listed(fit), "eq4_fit_H30": listed(fit30),
+                   "eq5_fit_H30": listed(eq5), "eq20_fit": listed(mu_fit),
+                   "by_im_H30": {f"{im:g}": {k: (list(v) if isinstance(v, tuple) else v) for k, v in q.items()}
+                                 for im, q in by_im(runs).items()}},
                   f, indent=1, default=float)
 
 
 def draw(top, figdir):
     """What study.py figures does: the figures of the runs of top into figdir"""
     runs = read_runs(top)
-    figures(runs, scan_fit(runs), figdir)
+    fit, fit30, eq5, mu_fit = _fits(runs)
+    figures(runs, fit, figdir, fit30, eq5, mu_fit)

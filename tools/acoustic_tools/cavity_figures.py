@@ -12,8 +12,21 @@ or a user's own runs can call them:
                           and their parameters against I_M
   fig13_wall_pdfs         the same for the total force F / mean(F)
   fig14_meso_pdfs         PDFs of F_i / mean(F_i) per portion and the mean
-                          over portions 3..9 for several I_M
+                          over the central portions (3..9 of 10) for several
+                          I_M, zero records apart (their fraction in the legend)
   fig_volume_fraction     Phi* against I_M
+  fig4_force_vortex       F/(PLd) against ell/L with the Eq. 5 fit
+  fig8_autocorrelation    C(F(t), F(t + Delta t)) of the whole wall for
+                          several I_M, the inset against (U/d) Delta t
+  fig11_particle_pairs    particle-scale PDFs of several (N_U, N_P) at one I_M
+  fig20_loglinear         the PDFs of Figs. 12 and 13 on a log-linear scale
+  fig6_mu_map             (mu_loc - mu_th) / mu_th over the cavity
+  fig19_mu_I              mu_loc against I in the region of Fig. 19, Eq. 20
+
+The PDFs of forces (Figs. 11-14, 20) leave the zero records out of the
+density and give their fraction p0: the histogram integrates to 1 - p0 and
+is drawn with (1 - p0) Eq. 7, fitted to the positive records scaled by the
+mean of all of them (cavity.fit_eq7_with_zeros, cavity.pdf_with_zeros).
 """
 import matplotlib
 
@@ -110,26 +123,34 @@ def fig10_correlation_times(IM, dtc, path, title=""):
 
 
 def _pdfs_with_fits(samples, path, fits, bins, xlabel, title):
-    """PDFs of values / mean for each I_M with the truncated log-normal of
-    Eq. 7 (dashed) and the parameters against I_M"""
+    """PDFs of values / mean for each I_M (zero records apart: their
+    fraction p0 in the legend, the density of the others integrates to
+    1 - p0) with (1 - p0) Eq. 7 (dashed) and Eq. 7's parameters against I_M;
+    fits: I_M -> cavity.fit_eq7_with_zeros's dict or (mu, sigma, f0)"""
     ims = sorted(samples)
     fits = dict(fits or {})
     for im in ims:
         if im not in fits:
-            v = np.asarray(samples[im], float)
-            fits[im] = cavity.fit_trunc_lognormal(v / v.mean())
+            fits[im] = cavity.fit_eq7_with_zeros(samples[im])
+        elif not isinstance(fits[im], dict):
+            mu, sigma, f0 = fits[im]
+            fits[im] = {"mu": mu, "sigma": sigma, "f0": f0, "p0": cavity.zero_fraction(samples[im])}
+    edges = np.linspace(0.0, 6.0, int(bins) + 1) if np.ndim(bins) == 0 else np.asarray(bins, float)
     fig, (left, right) = plt.subplots(1, 2, figsize=(8.0, 3.6))
     for colour, im in zip(_im_colours(ims), ims):
-        x, dens = cavity.normalised_pdf(samples[im], bins)
-        left.plot(x, dens, color=colour, lw=1.0, label=f"$I_M$ = {im:.2g}")
-        grid = np.linspace(1e-6, x.max(), 300)
-        left.plot(grid, cavity.trunc_lognormal_pdf(grid, *fits[im]), "--", color=colour, lw=0.8)
-    left.set_xlim(0.0, 6.0)
+        x, dens, p0 = cavity.pdf_with_zeros(samples[im], edges)
+        left.plot(x, dens, color=colour, lw=1.0, label=f"$I_M$ = {im:.2g}, $p_0$ = {p0:.2f}")
+        fit = fits[im]
+        if np.isfinite(fit["mu"]):
+            grid = np.linspace(1e-6, edges[-1], 300)
+            left.plot(grid, (1 - p0) * cavity.trunc_lognormal_pdf(grid, fit["mu"], fit["sigma"], fit["f0"]), "--",
+                      color=colour, lw=0.8)
+    left.set_xlim(0.0, edges[-1])
     left.set_xlabel(xlabel)
-    left.set_ylabel("PDF")
+    left.set_ylabel("PDF (zeros apart)")
     left.set_title("(a)")
-    left.legend(frameon=False, fontsize=7)
-    params = np.array([fits[im] for im in ims])
+    left.legend(frameon=False, fontsize=6)
+    params = np.array([[fits[im]["mu"], fits[im]["sigma"], fits[im]["f0"]] for im in ims])
     for k, (name, marker) in enumerate(((r"$\mu$", "o"), (r"$\sigma$", "s"), (r"$f_0$", "^"))):
         right.semilogx(ims, params[:, k], marker + "-", label=name)
     right.set_xlabel(r"$I_M$")
@@ -152,30 +173,51 @@ def fig13_wall_pdfs(samples, path, fits=None, bins=60, title="total force on the
     _pdfs_with_fits(samples, path, fits, bins, r"$F/\bar F$", title)
 
 
-def fig14_meso_pdfs(series, series_by_IM, path, bins=50, portions=(3, 9), title=""):
+def fig14_meso_pdfs(series, series_by_IM, path, bins=40, portions=(3, 9), title="", xmax=4.0):
     """Fig. 14: (a) PDFs of F_i / mean(F_i) of the portions of one run
-    (series is (time, portion), bottom first; blue: i = 1, 2, orange: the
-    central portions, red: the top one); (b) the mean over portions
-    portions[0] .. portions[1] for each I_M of series_by_IM"""
+    (series is (time, portion), bottom first; blue: below portions[0],
+    orange: the central portions, red: above portions[1]); (b) the mean over
+    the central portions for each I_M of series_by_IM (each (time, portion),
+    portions as in (a) when there are 10 of them, else cavity.central_portions).
+    Zero records are apart: the densities integrate to 1 - p0, the mean p0
+    of the central portions is in the legend; x from 0 to xmax."""
     series = np.asarray(series, float)
     n = series.shape[1]
-    fig, (left, right) = plt.subplots(1, 2, figsize=(8.0, 3.6))
+    edges = np.linspace(0.0, xmax, int(bins) + 1)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(9.0, 3.8))
+
+    def central(m):
+        return list(range(portions[0] - 1, portions[1])) if m == 10 else cavity.central_portions(m)
+
+    middle = central(n)
     for i in range(n):
-        colour = "C0" if i + 1 < portions[0] else ("C3" if i + 1 > portions[1] else "C1")
-        x, dens = cavity.normalised_pdf(series[:, i], bins)
-        left.plot(x, dens, color=colour, lw=0.8, label=f"i = {i + 1}" if i + 1 in (1, portions[0], n) else None)
+        colour = "C1" if i in middle else ("C0" if i < min(middle, default=0) else "C3")
+        x, dens, p0 = cavity.pdf_with_zeros(series[:, i], edges)
+        label = f"i = {i + 1}" if i in (0, middle[0] if middle else 0, n - 1) else None
+        left.plot(x, dens, color=colour, lw=0.8, label=label)
+    left.set_xlim(0.0, xmax)
     left.set_xlabel(r"$F_i/\bar F_i$")
-    left.set_ylabel("PDF")
+    left.set_ylabel("PDF (zeros apart)")
     left.set_title("(a) portions")
     left.legend(frameon=False, fontsize=7)
     ims = sorted(series_by_IM)
     for colour, im in zip(_im_colours(ims), ims):
-        x, dens = cavity.mean_portion_pdf(series_by_IM[im], bins, portions)
-        right.plot(x, dens, color=colour, lw=1.0, label=f"$I_M$ = {im:.2g}")
+        block = np.asarray(series_by_IM[im], float)
+        cols = central(block.shape[1])
+        curves, zeros = [], []
+        for i in cols:
+            x, dens, p0 = cavity.pdf_with_zeros(block[:, i], edges)
+            if np.isfinite(p0):
+                curves.append(dens)
+                zeros.append(p0)
+        if curves:
+            right.plot(x, np.mean(curves, axis=0), color=colour, lw=1.0,
+                       label=f"$I_M$ = {im:.2g}, $p_0$ = {np.mean(zeros):.2f}")
+    right.set_xlim(0.0, xmax)
     right.set_xlabel(r"$F_i/\bar F_i$")
-    right.set_ylabel(f"mean PDF, i = {portions[0]}..{portions[1]}")
+    right.set_ylabel("mean PDF, central portions")
     right.set_title("(b)")
-    right.legend(frameon=False, fontsize=7)
+    right.legend(frameon=False, fontsize=6)
     if title:
         fig.suptitle(title)
     _save(fig, path)
@@ -215,4 +257,136 @@ def fig2_streamlines(xc, yc, vx, vy, L, path, centre=None, title=""):
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     ax.set_title(title)
+    _save(fig, path)
+
+
+def fig4_force_vortex(ell_over_L, Fnorm, IM, path, fit=None, title=""):
+    """Fig. 4: F/(PLd) against ell/L (colour: log I_M), the Eq. 5 fit
+    ((c1, c2)) and the paper's (0.88, 0.5)"""
+    ell = np.asarray(ell_over_L, float)
+    fig, ax = plt.subplots(figsize=(5.0, 4.0))
+    ax.scatter(ell, Fnorm, c=np.log10(np.asarray(IM, float)), cmap="viridis", s=20)
+    grid = np.linspace(0.0, 1.0, 50)
+    if fit is not None:
+        ax.plot(grid, fit[0] - fit[1] * grid, "C3-", lw=1.0, label=f"Eq. 5: $c_1$ = {fit[0]:.2f}, $c_2$ = {fit[1]:.2f}")
+    c1, c2 = cavity.PAPER_EQ5
+    ax.plot(grid, c1 - c2 * grid, "k--", lw=0.8, label=f"paper: {c1}, {c2}")
+    ax.set_xlim(0.0, 1.0)
+    ax.set_xlabel(r"$\ell/L$")
+    ax.set_ylabel(r"$\bar F/(PLd)$")
+    ax.set_title(title)
+    ax.legend(frameon=False, fontsize=8)
+    _save(fig, path)
+
+
+def fig8_autocorrelation(curves, path, title="", max_periods=5.0):
+    """Fig. 8: C(F(t), F(t + Delta t)) of the whole wall against Delta t (s)
+    for several I_M; inset: against (U/d) Delta t.  curves: I_M -> (dt_rec
+    (s), C (lag k at k dt_rec), d/U (s))"""
+    ims = sorted(curves)
+    fig, ax = plt.subplots(figsize=(5.5, 4.2))
+    inset = ax.inset_axes([0.45, 0.45, 0.5, 0.45])
+    for colour, im in zip(_im_colours(ims), ims):
+        dt, C, period = curves[im]
+        lags = np.arange(len(C)) * dt
+        ax.plot(lags, C, color=colour, lw=0.9, label=f"$I_M$ = {im:.2g}")
+        keep = lags <= max_periods * period
+        inset.plot(lags[keep] / period, C[keep], color=colour, lw=0.8)
+    ax.set_xscale("log")
+    ax.axhline(cavity.THRESHOLD, color="k", ls="--", lw=0.7)
+    ax.set_xlabel(r"$\Delta t$ (s)")
+    ax.set_ylabel(r"$C(F(t), F(t+\Delta t))$")
+    ax.legend(frameon=False, fontsize=7, loc="lower left")
+    inset.axhline(0.0, color="0.6", lw=0.5)
+    inset.set_xlabel(r"$(U/d)\Delta t$", fontsize=7)
+    inset.tick_params(labelsize=6)
+    ax.set_title(title)
+    _save(fig, path)
+
+
+def fig11_particle_pairs(groups, path, bins=40, xmax=6.0, title="grain-wall contact forces"):
+    """Fig. 11: at each I_M (a panel), the particle-scale PDFs of f / mean(f)
+    of each (N_U, N_P) pair; groups: I_M -> {(N_U, N_P): forces}"""
+    ims = sorted(groups)
+    fig, axes = plt.subplots(1, max(1, len(ims)), figsize=(3.2 * max(1, len(ims)), 3.4), squeeze=False)
+    edges = np.linspace(0.0, xmax, int(bins) + 1)
+    for ax, im in zip(axes[0], ims):
+        for k, (pair, f) in enumerate(sorted(groups[im].items())):
+            x, dens, p0 = cavity.pdf_with_zeros(f, edges)
+            ax.plot(x, dens, color=f"C{k}", lw=1.0, label=f"$N_U$ = {pair[0]:g}, $N_P$ = {pair[1]:.3g}")
+        ax.set_title(f"$I_M$ = {im:.2g}", fontsize=9)
+        ax.set_xlabel(r"$f/\bar f$")
+        ax.legend(frameon=False, fontsize=6)
+    axes[0][0].set_ylabel("PDF")
+    fig.suptitle(title)
+    _save(fig, path)
+
+
+def fig20_loglinear(particle, wall, path, fits_particle=None, fits_wall=None, bins=50, xmax=8.0):
+    """Fig. 20: the PDFs of (a) f / mean(f) and (b) F / mean(F) on a
+    log-linear scale with (1 - p0) Eq. 7; particle, wall: I_M -> records"""
+    fig, axes = plt.subplots(1, 2, figsize=(8.5, 3.6))
+    edges = np.linspace(0.0, xmax, int(bins) + 1)
+    for ax, samples, fits, label in ((axes[0], particle, fits_particle, r"$f/\bar f$"),
+                                     (axes[1], wall, fits_wall, r"$F/\bar F$")):
+        ims = sorted(samples)
+        for colour, im in zip(_im_colours(ims), ims):
+            x, dens, p0 = cavity.pdf_with_zeros(samples[im], edges)
+            ax.semilogy(x, np.where(dens > 0, dens, np.nan), "o", ms=2.5, color=colour, label=f"$I_M$ = {im:.2g}")
+            fit = (fits or {}).get(im) or cavity.fit_eq7_with_zeros(samples[im])
+            if np.isfinite(fit["mu"]):
+                grid = np.linspace(1e-6, xmax, 300)
+                ax.semilogy(grid, (1 - p0) * cavity.trunc_lognormal_pdf(grid, fit["mu"], fit["sigma"], fit["f0"]),
+                            "-", color=colour, lw=0.8)
+        ax.set_ylim(1e-4, 5.0)
+        ax.set_xlim(0.0, xmax)
+        ax.set_xlabel(label)
+        ax.set_ylabel("PDF (zeros apart)")
+        ax.legend(frameon=False, fontsize=6)
+    axes[0].set_title("(a) particle scale")
+    axes[1].set_title("(b) whole wall")
+    _save(fig, path)
+
+
+def fig6_mu_map(x, y, I, mu, path, L, h, params=cavity.PAPER_MU_I, title=""):
+    """Fig. 6: the map of (mu_loc - mu_th) / mu_th, mu_th of Eq. 20 with
+    params, over the cavity (x, y bin centres; I, mu (ny, nx)); the colour
+    scale from -1 to 1"""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        th = cavity.mu_I_model(I, *params)
+        rel = (mu - th) / th
+    keep = (y > 0) & (y < h)
+    fig, ax = plt.subplots(figsize=(9.0, 9.0 * h / L * 1.2 + 1.2))
+    image = ax.pcolormesh(x, y[keep], rel[keep], cmap="RdBu_r", vmin=-1, vmax=1, shading="nearest")
+    fig.colorbar(image, ax=ax, label=r"$(\mu_{loc}-\mu_{th})/\mu_{th}$", shrink=0.8)
+    ax.set_xlim(0.0, L)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_title(title)
+    _save(fig, path)
+
+
+def fig19_mu_I(points, path, fit=None, title="the region of Fig. 19"):
+    """Fig. 19: mu_loc against I of the bins of each run's region (points:
+    I_M -> (I, mu)), Eq. 20 fitted (fit: (mu1, mu2, I0)) and the paper's"""
+    ims = sorted(points)
+    fig, ax = plt.subplots(figsize=(5.5, 4.2))
+    allI = []
+    for colour, im in zip(_im_colours(ims), ims):
+        I, mu = points[im]
+        ax.semilogx(I, mu, ".", ms=2, color=colour, label=f"$I_M$ = {im:.2g}")
+        allI.append(np.asarray(I, float))
+    finite = np.concatenate(allI) if allI else np.array([1e-3])
+    finite = finite[np.isfinite(finite) & (finite > 0)]
+    grid = np.logspace(np.log10(max(finite.min(), 1e-6)) if finite.size else -5, 0.5, 200)
+    if fit is not None:
+        ax.semilogx(grid, cavity.mu_I_model(grid, *fit), "C3-", lw=1.0,
+                    label=f"Eq. 20: {fit[0]:.2f}, {fit[1]:.2f}, {fit[2]:.2g}")
+    ax.semilogx(grid, cavity.mu_I_model(grid, *cavity.PAPER_MU_I), "k--", lw=0.8, label="paper: 0.12, 0.40, 0.13")
+    ax.set_ylim(-0.2, 1.0)
+    ax.set_xlabel(r"$I$ (Eq. 18)")
+    ax.set_ylabel(r"$\mu_{loc}$ (Eq. 19)")
+    ax.set_title(title)
+    ax.legend(frameon=False, fontsize=6)
     _save(fig, path)

@@ -20,6 +20,10 @@ chain_A_<N>.dat, chain_B_<N>.dat).
   collect_results       all of it: the dict of results.json
   tables                the markdown tables of tables.md
   figures               the figures (sound_figures)
+  frictionless_results, frictionless_tables
+                        the frictionless packings (job.json mu = 0),
+                        kept apart from the frictional ones: their own
+                        pressures, Tables I and II rows, speeds, Fig. 4(c)
   collect, draw          what study.py collect and study.py figures do
 """
 import json
@@ -61,6 +65,8 @@ APPENDIX_B = {f"{modulus}_{kind}{n}_ratio": (kind, n, direction, modulus)
 
 
 DEFAULT_PISTON = (1, 0.001)    # in.packing's piston_mass and piston_speed
+DEFAULT_MU = 0.5               # in.packing's friction coefficient (job.json without mu: 0.5)
+FRICTIONLESS = 0.0             # mu of the frictionless packings (paper 003 Fig. 4(c))
 
 # the values of a sample's result.json, in the order of results.json: what
 # in.measure measured (with the deck's settings W, D, p_target, seed and
@@ -76,18 +82,33 @@ def piston_of(settings):
     return (settings["piston_mass"], settings["piston_speed"])
 
 
+def mu_of(settings):
+    """the friction coefficient of a sample's job.json (DEFAULT_MU when it
+    does not say: the samples made before study.py run --mu)"""
+    return float(settings.get("mu", DEFAULT_MU))
+
+
+def network_model(mu):
+    """the contact network of a packing of friction coefficient mu, as
+    in.measure linearises it: "normal" (frictionless) for mu = 0, else "full"."""
+    return "normal" if float(mu) == 0.0 else "full"
+
+
 def sample_key(settings):
     """(p, H, seed) of a sample's job.json"""
     return (float(settings["p"]), int(settings["H"]), int(settings["seed"]))
 
 
-def samples(out, piston=DEFAULT_PISTON):
+def samples(out, piston=DEFAULT_PISTON, mu=DEFAULT_MU):
     """(p, H, seed) -> (directory, result) of every finished sample made
-    with the given piston (mass, speed): the default one unless told; in
-    the order of the directories' names"""
+    with the given piston (mass, speed) and friction coefficient mu: the
+    default ones (the paper's mu = 0.5) unless told; in the order of the
+    directories' names"""
     found = {}
     for directory, settings, result in study.finished_jobs(out):
         if settings.get("kind") != "sample" or piston_of(settings) != tuple(piston):
+            continue
+        if mu_of(settings) != float(mu):
             continue
         found[sample_key(settings)] = (directory, result)
     return found
@@ -139,12 +160,14 @@ def _number(value):
     return math.nan if value is None else float(value)
 
 
-def sample_results(path, result):
+def sample_results(path, result, model="full"):
     """Everything about one sample: its result.json (result) as in.sound
     wrote it (SUMMARY_KEYS, MODULI_KEYS), the coherent peak of both pulses,
     the statics of Table I, whether the packing came to rest, the stress
     ratio of its acceptance checks, the overshoot of its compression and (2D)
-    the moduli of its contact network (path: the job's directory)"""
+    the moduli of its contact network (path: the job's directory; model:
+    the network, "full", or "normal" for a frictionless packing, which
+    has no Appendix B: its C33 is zero)"""
     summary = {key: _number(result[key]) for key in SUMMARY_KEYS if key in result}
     out = dict(summary)
     out.update({key: _number(result[key]) for key in MODULI_KEYS if key in result})
@@ -166,9 +189,10 @@ def sample_results(path, result):
         out["overshoot"] = summary["p_peak"] / summary["p"]
     if not summary.get("D"):
         # the same moduli from the linear response of the contact network (2D)
-        network = network_moduli.network_moduli(grains, contacts, summary["W"], summary["h"])
+        network = network_moduli.network_moduli(grains, contacts, summary["W"], summary["h"], model=model)
         out.update({f"{key}_network": value for key, value in network.items()})
-        out.update(appendix_b(grains, contacts, summary["W"], summary["h"], network))
+        if model == "full":
+            out.update(appendix_b(grains, contacts, summary["W"], summary["h"], network))
     return out
 
 
@@ -412,15 +436,17 @@ def height_series(per_sample, pressure):
     return series
 
 
-def usable_samples(out):
+def usable_samples(out, mu=DEFAULT_MU):
     """(found, per_sample, off_target, not_at_rest): the directory of every
-    finished sample with the default piston ((p, H, seed) -> path), the
+    finished sample with the default piston and friction coefficient mu
+    (the paper's 0.5 unless told; (p, H, seed) -> path), the
     sample_results of those that belong to a pressure series, and the names
     of those left out: the packings whose servo did not bring the wall
     pressure within 5 % of the target, and those not at rest"""
-    jobs = samples(out)
+    jobs = samples(out, mu=mu)
     found = {key: directory for key, (directory, _) in jobs.items()}
-    per_sample = {key: sample_results(directory, result) for key, (directory, result) in jobs.items()}
+    model = network_model(mu)
+    per_sample = {key: sample_results(directory, result, model) for key, (directory, result) in jobs.items()}
     off_target = sorted(os.path.basename(found[key]) for key, r in per_sample.items()
                         if abs(r["p"] / key[0] - 1.0) > 0.05)
     not_at_rest = sorted(os.path.basename(found[key]) for key, r in per_sample.items() if not r["at_rest"])
@@ -613,6 +639,30 @@ def collect_results(out, per_sample, off_target, not_at_rest):
     results["c33_candidates"] = {f"{p:g}": c for p, c in c33_candidates(per_sample, pressures).items()}
     # the same checks for every piston (mass, dashpot speed) at p = 1e-4, H = 25
     results["pistons"] = piston_checks(out)
+    frictionless = frictionless_results(usable_samples(out, FRICTIONLESS))
+    if frictionless:
+        results["frictionless"] = frictionless
+    return results
+
+
+def frictionless_results(usable):
+    """results.json's "frictionless": the frictionless packings (mu = 0;
+    usable: usable_samples(out, FRICTIONLESS)), apart from the frictional
+    ones: each sample, those left out, the entry of each pressure
+    (pressure_entry: statics of the H = 25 packings, moduli, network moduli
+    of the frictionless network, c_tof from the H = 8 / 25 pairs) and c_tof
+    against p; None without frictionless samples"""
+    found, per_sample, off_target, not_at_rest = usable
+    if not found:
+        return None
+    pressures = pressures_of(per_sample)
+    results = {"mu": FRICTIONLESS, "samples": {f"p{p:g}_H{H}_s{s}": r for (p, H, s), r in per_sample.items()},
+               "off_target": off_target, "not_at_rest": not_at_rest,
+               "pressures": {f"{p:g}": pressure_entry(per_sample, p) for p in pressures}}
+    with_speed = speed_pressures(results, pressures)
+    if len(with_speed) >= 2:
+        results["c_tof_exponent"], _ = sound.power_law_fit(
+            with_speed, [results["pressures"][f"{p:g}"]["c_tof_t10"][0] for p in with_speed])
     return results
 
 
@@ -875,7 +925,57 @@ def tables(results, pressures):
         lines.append(f"p = 1e-4, condition A, heights: H {series['H']}, samples {series['samples']}, "
                      f"L {np.round(series['L'], 2).tolist()}, gamma_eff {np.round(series['gamma_eff'], 3).tolist()}, "
                      f"alpha_eff {np.round(series['alpha_eff'], 3).tolist()}")
+    if results.get("frictionless"):
+        lines += [""] + frictionless_tables(results["frictionless"])
     return "\n".join(lines)
+
+
+def frictionless_tables(frictionless):
+    """The lines of tables.md on the frictionless packings (results.json's
+    "frictionless"), after every table of the frictional ones: Table I's
+    rows "ACOUSTIC, frictionless", Table II's (moduli of the DEM at mu = 0
+    and of the frictionless network; C33 is zero: flat frictionless walls
+    carry no shear), the speeds of the H = 8 / 25 pairs"""
+    pressures = sorted(float(p) for p in frictionless["pressures"])
+    lines = ["## Frictionless packings (mu = 0; paper 003 Fig. 4(c): measured on the frictionless network, "
+             "model normal)", ""]
+    lines += _table_head(["Table I, frictionless (bulk of the H = 25 packings; the paper gives no frictionless "
+                          "table)"],
+                         ["p", "source", "samples", "Φ2", "Φ3", "Φ3*", "z*", "f0", "⟨N⟩/p", "Z(2)", "Z(3)", "F2",
+                          "F2^S", "σ1/σ2"])
+    for p in pressures:
+        e = frictionless["pressures"][f"{p:g}"]
+        lines.append(f"| {p:g} | ACOUSTIC, frictionless | {e['tall_samples']} | " + " | ".join(
+            _cell(e, k) for k in ("phi2", "phi3", "phi3_star", "z_star", "f0", "mean_force_over_p", "Z2", "Z3",
+                                  "F2", "F2_strong", "sigma_ratio")) + " |")
+    lines.append("")
+    lines += _table_head(["Table II, frictionless (H = 25 packings whose compression and stretch stayed linear; "
+                          "C33: zero, flat frictionless walls carry no shear)"],
+                         ["p", "source", "σ1/σ2", "moduli samples", "C11", "C12", "C12 (from ε11)", "C22"])
+    for p in pressures:
+        e = frictionless["pressures"][f"{p:g}"]
+        lines.append(f"| {p:g} | ACOUSTIC, frictionless | " + " | ".join(_cell(e, k) for k in (
+            "sigma1_over_sigma2", "moduli_samples", "C11", "C12", "C12_from_eps11", "C22")) + " |")
+        if "C22_network" in e:
+            lines.append(f"| {p:g} | ACOUSTIC, frictionless network | - | {e['tall_samples']} | - | - | - | "
+                         f"{_cell(e, 'C22_network')} |")
+    lines.append("")
+    lines += _table_head(["Speeds and the coherent peak, frictionless (c_tof from the H = 8 and H = 25 packings "
+                          "of each seed)"],
+                         ["p", "pairs", "c_tof (10 %)", "c_tof (peak)", "c_tof (zero)", "c_ℓ", "c_tof/c_ℓ",
+                          "γ (L 8-25)", "α (L 8-25)"])
+    for p in pressures:
+        e = frictionless["pressures"][f"{p:g}"]
+        lines.append(f"| {p:g} | {e['samples']} | " + " | ".join(_cell(e, k) for k in (
+            "c_tof_t10", "c_tof_t_peak", "c_tof_t_zero", "c_l", "c_tof_over_c_l", "gamma", "alpha")) + " |")
+    lines.append("")
+    lines.append(f"frictionless packings left out (final pressure more than 5 % from the target): "
+                 f"{frictionless['off_target'] or 'none'}")
+    lines.append(f"frictionless packings left out (not at rest within the deck's max_checks): "
+                 f"{frictionless['not_at_rest'] or 'none'}")
+    if "c_tof_exponent" in frictionless:
+        lines.append(f"frictionless: c_tof ∝ p^x with x = {frictionless['c_tof_exponent']:.4f}")
+    return lines
 
 
 def fig5_signals(per_sample, found):
@@ -970,6 +1070,23 @@ def figures(results, per_sample, found, figdir, out=None):
                                                      os.path.join(figdir, "stress_ratio_overshoot.png"))
     if curves:
         sound_figures.fig7_exponents(curves, os.path.join(figdir, "fig7_exponents.png"))
+
+
+def frictionless_figures(usable, figdir):
+    """Fig. 4(c) (paper 003: "2D frictionless ... systems exhibit similar
+    behavior"): F_sig of the frictionless H = 25 packings at p = 1e-4
+    (usable: usable_samples(out, FRICTIONLESS)), each in grey, their
+    ensemble mean and RMS deviation, into figdir/fig4c_signal_frictionless_p1e-4.png;
+    the number of packings drawn (0: none, no figure)"""
+    found, per_sample, _, _ = usable
+    tall = sorted(key for key in per_sample if key[0] == 1e-4 and key[1] == 25)
+    if not tall:
+        return 0
+    signals = [sound.read_pulse(os.path.join(found[key], "pulse_A.dat")) for key in tall]
+    sound_figures.fig4_signals(signals, sound.ensemble(signals),
+                               os.path.join(figdir, "fig4c_signal_frictionless_p1e-4.png"),
+                               f"2D frictionless (μ = 0), p = 1e-4, L ≈ 25, condition A: {len(tall)} packings")
+    return len(tall)
 
 
 def figures_job(out):
@@ -1118,6 +1235,7 @@ def draw(out, figdir):
     found, per_sample, off_target, not_at_rest = usable_samples(out)
     results = collect_results(out, per_sample, off_target, not_at_rest)
     figures(results, per_sample, found, figdir, out)
+    frictionless_figures(usable_samples(out, FRICTIONLESS), figdir)
     shown = packing_figures(out, per_sample, found, figdir)
     if shown:
         with open(os.path.join(out, "packing_figures.json"), "w") as handle:

@@ -4,13 +4,17 @@ different LAMMPS consumers (a dump of the contacts, compute reduce/chunk,
 compute reduce) and must agree; acoustic_tools.cavity reads every output.
 The small cavity runs as a job of the study (acoustic_tools.cavity_study,
 behind examples/cavity/study.py: job.json, then in.cavity writes
-result.json), and study.py collect reads it."""
+result.json), and study.py collect reads it.  The same cavity run as pieces
+(one LAMMPS process per chunk of shear, one of them killed) is the
+uninterrupted one, bit for bit."""
+import filecmp
 import json
 import math
 import os
 import re
 import subprocess
 import sys
+import time
 
 import numpy as np
 import pytest
@@ -114,8 +118,9 @@ def test_three_scales_of_wall_force_agree(small_run):
     assert np.allclose(tool_portions, portions, rtol=0, atol=1e-4 * scale)
     # a frictionless wall pushes: every contact force on the wall is a push
     assert all(np.all(s["v_fwall"] >= 0.0) for s in snaps)
-    # records: every nevery steps from nskip on
-    assert np.all(np.diff(steps) == int(p["nevery"])) and steps[0] >= p["nskip"]
+    # records: every nevery steps after nskip
+    assert np.all(np.diff(steps) == int(p["nevery"])) and steps[0] == p["nskip"] + p["nevery"]
+    assert steps[-1] == p["nshear"] and p["nshear"] % p["nchunk"] == 0 and p["nskip"] % p["nchunk"] == 0
 
 
 def test_mean_force_and_vortex(small_run):
@@ -143,6 +148,47 @@ def test_mean_force_and_vortex(small_run):
     assert 0.0 < ell < 1.0
 
 
+def _outputs(path):
+    return sorted(f for f in os.listdir(path) if f.startswith("c.") and ".last" not in f and f != "c.resume")
+
+
+def test_pieces_are_the_uninterrupted_run(small_run, tmp_path):
+    """the small cavity in pieces of one chunk (in.cavity's restart points):
+    two pieces, then one killed before its restart point (its resume line
+    is the one before it, its outputs run past it, the last dump frame cut
+    half-way), then the rest; records and result as the uninterrupted run"""
+    whole, _ = small_run
+    path = tmp_path / "test" / "pieces"
+    settings = dict(study.read_job(str(whole)), name="pieces")
+    printed = cavity_study.run_job(LMP, HERE, str(path), settings, piece_seconds=1e-3, max_pieces=2)
+    assert "paused after 2 piece(s) at step" in printed and study.read_result(str(path)) is None, printed
+    step = cavity_study.read_resume(str(path), "c")[0]
+    assert step == 2 * params(whole)["nchunk"]
+    resume = (path / "c.resume").read_text()
+    printed = cavity_study.run_job(LMP, HERE, str(path), settings, piece_seconds=1e-3, max_pieces=1)
+    assert cavity_study.read_resume(str(path), "c")[0] > step, printed
+    (path / "c.resume").write_text(resume)              # killed before its resume line
+    with open(path / "c.contacts", "a") as handle:      # and in the middle of a frame
+        handle.write("ITEM: TIMESTEP\n999999\nITEM: NUMBER OF ATOMS\n7\n")
+    printed = cavity_study.run_job(LMP, HERE, str(path), settings, piece_seconds=1e-3)
+    assert printed.startswith("test/pieces: ") and "FAILED" not in printed, printed
+    assert "resumed at step" in (path / f"log.piece{step}").read_text()
+    assert _outputs(path) == _outputs(whole) and "c.wall.txt" in _outputs(path)
+    for name in _outputs(whole):
+        assert filecmp.cmp(path / name, whole / name, shallow=False), name
+    one, pieced = params(whole), params(path)
+    assert one.pop("wall_seconds") > 0 and pieced.pop("wall_seconds") > 0
+    assert pieced == one
+
+
+def test_no_piece_after_the_deadline(tmp_path):
+    """study.py run --hours: no piece starts after the call's deadline"""
+    settings = cavity_study.job_settings("test", "late", SMALL["Hd"], SMALL["NP"], SMALL["NU"], SMALL["strain"],
+                                         SMALL["tskip"], 0, tag="c")
+    printed = cavity_study.run_job(LMP, HERE, str(tmp_path / "late"), settings, deadline=time.time() - 1)
+    assert "paused at the start" in printed and not (tmp_path / "late" / "log.lammps").exists()
+
+
 def test_ultrasound_from_the_bottom(tmp_path):
     log = run_deck(tmp_path, dict(SMALL, strain=2, freq=70e3, tag="u"))
     assert study.read_result(str(tmp_path)) is None and (tmp_path / "u.result.json").exists()
@@ -156,7 +202,10 @@ def test_ultrasound_from_the_bottom(tmp_path):
 
 
 def test_bad_parameters_are_refused(tmp_path):
-    for bad, what in (({"strain": 1, "tskip": 2}, "strain"), ({"Hd": 2}, "Hd >= 3")):
+    for bad, what in (({"strain": 1, "tskip": 2}, "strain"), ({"Hd": 2}, "Hd >= 3"),
+                      ({"walls": "rough"}, "walls must be smooth or coulomb"),
+                      ({"append": 1, "restart": "none.restart"}, "needs -var restart"),
+                      ({"strain": 1.2, "tskip": 1, "tchunk": 1}, "by at least one chunk")):
         command = [LMP, "-in", os.path.join(HERE, "in.cavity"), "-log", str(tmp_path / "log.bad"), "-nocite",
                    "-screen", "none", "-var", "dir", HERE]
         for name, value in dict(SMALL, **bad).items():

@@ -4,7 +4,9 @@ packing and a short 1D chain, two jobs at a time), each job's job.json and
 result.json are checked, and `collect` turns them into results.json and
 tables.md.  The 1D chain must show paper 003's exponents (gamma = 2/3 for
 condition A, 1 for B); a small confined packing must reach its pressure at
-rest and carry a pulse at about paper 003's speed."""
+rest and carry a pulse at about paper 003's speed; a small frictionless
+packing (run --mu 0) is measured on the frictionless network (model
+normal) and collected apart from the frictional one."""
 import json
 import os
 import subprocess
@@ -30,13 +32,16 @@ def study_py(cwd, *arguments):
 @pytest.fixture(scope="module")
 def jobs(tmp_path_factory):
     """study.py run of one small packing (W = H = 8, p = 1e-4, thermo every
-    10 steps of the compression) and of the chain N = 32, 64, 128"""
+    10 steps of the compression) and of the chain N = 32, 64, 128; then the
+    same packing frictionless (--mu 0) beside it"""
     out = tmp_path_factory.mktemp("sound")
     printed = study_py(out, "run", "--lmp", LMP, "--out", str(out), "--jobs", "2", "--pressures", "1e-4",
                        "--heights", "8", "--seeds", "1", "--width", "8", "--var", "thermo_every", "10",
                        "--chain", "--chain-sizes", "32", "64", "128", "--chain-poly", "0.1", "--chain-poly-sizes", "16",
                        "32", "--chain-realizations", "2", "--lattice-series", "1e-4", "--lattice-series-rows", "4", "8",
                        "12")
+    printed += study_py(out, "run", "--lmp", LMP, "--out", str(out), "--jobs", "1", "--pressures", "1e-4",
+                        "--heights", "8", "--seeds", "1", "--width", "8", "--mu", "0")
     return out, printed
 
 
@@ -46,7 +51,7 @@ def test_run_writes_job_and_result(jobs):
     assert "p=1e-4 H=8 seed=1: moduli: sigma1/sigma2" in printed
     settings = study.read_job(str(sample))
     assert settings == {"kind": "sample", "deck": "in.sound", "p": 1e-4, "H": 8, "seed": 1, "W": 8, "D": 0,
-                        "piston_mass": 1, "piston_speed": 0.001, "variables": {"thermo_every": "10"}}
+                        "piston_mass": 1, "piston_speed": 0.001, "mu": 0.5, "variables": {"thermo_every": "10"}}
     result = study.read_result(str(sample))
     assert result["at_rest"] is True and result["p_target"] == 1e-4 and result["W"] == 8
     assert result["wall_seconds"] >= 0
@@ -193,3 +198,42 @@ def test_small_packing(jobs):
     assert moduli["C22"] == pytest.approx(network["C22"], rel=0.1)
     assert moduli["C33"] == pytest.approx(network["C33"], rel=0.25)
     assert "moduli: sigma1/sigma2" in log
+
+
+def test_frictionless_packing(jobs):
+    """run --mu 0: the packing of mu = 0 in its own directory, mu in
+    job.json, measured on the frictionless network: model normal in the
+    pulse's log line, 2 modes per grain (the frictional one: 3), of which
+    the rattlers' and the layer's sliding along the frictionless walls are
+    zero; no shear modulus (the walls carry no shear); collected apart"""
+    out, printed = jobs
+    sample = out / "p1e-4_H8_s1_mu0"
+    assert "p=1e-4 H=8 seed=1 mu=0: moduli: sigma1/sigma2" in printed
+    settings = study.read_job(str(sample))
+    assert settings["mu"] == 0 and settings["H"] == 8 and settings["W"] == 8
+    assert study.read_job(str(out / "p1e-4_H8_s1"))["mu"] == 0.5
+    log = (sample / "log.lammps").read_text()
+    assert "model normal (mu = 0)" in log and "mindlin/acoustic NULL 1.0 0" in log
+    result = study.read_result(str(sample))
+    assert result["at_rest"] is True and result["p"] == pytest.approx(1e-4, rel=0.02)
+    grains = lammps_output.read_dump(str(sample / "grains.dump"))[-1]
+    contacts = lammps_output.read_dump(str(sample / "contacts.dump"))[-1]
+    omega2 = lammps_output.read_ave_time_vector(str(sample / "modes.dat"))[-1][1][:, 0]
+    assert len(omega2) == 2 * result["N"] == 2 * len(grains["id"])
+    frictional = study.read_result(str(out / "p1e-4_H8_s1"))
+    assert len(lammps_output.read_ave_time_vector(str(out / "p1e-4_H8_s1" / "modes.dat"))[-1][1]) == 3 * frictional["N"]
+    rattlers = sound.rattlers(grains["id"], contacts[0], contacts[1])
+    assert np.sum(omega2 < 1e-6 * omega2.max()) >= 2 * len(rattlers) + 1
+    # the pulse crosses the layer; the DEM's C22 is the frictionless network's
+    t, f = sound.read_pulse(str(sample / "pulse_A.dat"))
+    assert result["h"] / sound.coherent_peak(t, f)["t_peak"] == pytest.approx(0.26, rel=0.4)
+    network = network_moduli.network_moduli(grains, contacts, result["W"], result["h"], model="normal")
+    assert result["C22"] == pytest.approx(network["C22"], rel=0.15)
+    assert abs(result["C33"]) < 1e-3 * result["C22"] and network["C33"] == 0.0
+    # collect: the frictionless sample apart, the frictional one where it was
+    study_py(out, "collect", "--out", str(out))
+    results = json.loads((out / "results.json").read_text())
+    assert list(results["frictionless"]["samples"]) == ["p0.0001_H8_s1"]
+    assert results["frictionless"]["samples"]["p0.0001_H8_s1"]["C22_network"] == pytest.approx(network["C22"])
+    assert results["samples"]["p0.0001_H8_s1"]["C22"] == frictional["C22"]
+    assert "## Frictionless packings" in (out / "tables.md").read_text()
