@@ -19,7 +19,8 @@
    results broadcast.  Outputs as in LAMMPS: scalar (zero modes), vector
    (frequencies; in LIGGGHTS of a length fixed when the compute is defined),
    array (histogram), local array (mode, f, participation), per-atom array
-   (the shape of one mode).  Grain-grain contacts only.
+   (the shape of one mode).  The walls of the network (fix wall/gran,
+   primitive or mesh, nodes of infinite mass) are clamped.
 ------------------------------------------------------------------------- */
 
 #ifdef COMPUTE_CLASS

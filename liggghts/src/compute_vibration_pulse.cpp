@@ -62,11 +62,12 @@ void broadcast_values(MPI_Comm world, std::vector<double> &values)
 /* ---------------------------------------------------------------------- */
 
 ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int &iarg, int narg, char **arg) :
-    Compute(lmp, iarg, narg, arg), ndof(0), network(NULL), solved_step(-1), signal(NULL),
-    snapshot_atom(NULL), nmax(0)
+    Compute(lmp, iarg, narg, arg), direction_given(false), ndof(0), network(NULL),
+    solved_step(-1), signal(NULL), snapshot_atom(NULL), nmax(0)
 {
   caller = std::string("compute vibration/pulse ") + id;
   groupbits[0] = groupbits[1] = groupbits[2] = 0;
+  walls[0] = walls[1] = -1;
   AcousticLiggghtsArguments args(lmp, caller, narg, arg, iarg);
   parse_endpoint(args, 0, "source");
   parse_endpoint(args, 1, "detector");
@@ -79,6 +80,7 @@ ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int &iarg, int narg, c
     if (args.network(settings, true)) continue;
     if (args.take("direction", 3)) {
       for (int k = 0; k < 3; k++) direction[k] = args.number(1 + k);
+      direction_given = true;
     } else if (args.take("initial", 1)) {
       if (strcmp(args.word(1), "velocity") != 0 && strcmp(args.word(1), "displacement") != 0)
         args.error_all("keyword initial must be velocity or displacement, got '%s'", args.word(1));
@@ -170,22 +172,24 @@ ComputeVibrationPulse::~ComputeVibrationPulse()
 }
 
 /* ----------------------------------------------------------------------
-   source|detector group-ID (a wall is not available in LIGGGHTS yet)
+   source|detector group-ID | wall fix-ID
 ------------------------------------------------------------------------- */
 
 void ComputeVibrationPulse::parse_endpoint(AcousticLiggghtsArguments &args, int which,
                                            const char *word)
 {
   if (!args.more() || strcmp(args.keyword(), word) != 0)
-    args.error_all("expected compute ID group-ID vibration/pulse source group-ID detector "
-                   "group-ID stiffness hertz E nu duration T [keyword value ...], got '%s' where "
-                   "'%s' belongs",
+    args.error_all("expected compute ID group-ID vibration/pulse source group-ID|wall fix-ID "
+                   "detector group-ID|wall fix-ID stiffness hertz E nu duration T [keyword "
+                   "value ...], got '%s' where '%s' belongs",
                    args.more() ? args.keyword() : "", word);
   args.take(word, 1);
-  if (strcmp(args.word(1), "wall") == 0)
-    args.error_all("%s wall: walls are not yet part of the network in LIGGGHTS; give a group of "
-                   "grains",
-                   word);
+  if (strcmp(args.word(1), "wall") == 0) {
+    args.take(word, 2);
+    wall_ids[which] = args.word(2);
+    args.next();
+    return;
+  }
   groupbits[which] = args.group_bit(1);
   group_names[which] = args.word(1);
   args.next();
@@ -252,6 +256,36 @@ void ComputeVibrationPulse::init()
 {
   network->init(false);
   check_groups();
+  char what[1024];
+  for (int e = 0; e < 2; e++) {
+    walls[e] = -1;
+    if (wall_ids[e].empty()) continue;
+    walls[e] = network->wall_index(wall_ids[e]);
+    if (walls[e] < 0) {
+      snprintf(what, sizeof(what),
+               "%s: %s wall %s is not a wall of the vibration network (give the ID of a fix "
+               "wall/gran primitive wall, or of the fix mesh/surface of a mesh wall)",
+               caller.c_str(), ENDPOINTS[e], wall_ids[e].c_str());
+      error->all(FLERR, what);
+    }
+  }
+  if (walls[0] >= 0 && walls[0] == walls[1]) {
+    snprintf(what, sizeof(what), "%s: the source and the detector are the same wall %s",
+             caller.c_str(), wall_ids[0].c_str());
+    error->all(FLERR, what);
+  }
+  // the default direction with a source wall: its normal, as in LAMMPS
+  if (walls[0] >= 0 && !direction_given) {
+    const int axis = network->walls()[walls[0]].plane_axis;
+    if (axis < 0) {
+      snprintf(what, sizeof(what),
+               "%s: source wall %s is a mesh, whose surface has no single normal; give the "
+               "direction of the pulse with the keyword direction",
+               caller.c_str(), wall_ids[0].c_str());
+      error->all(FLERR, what);
+    }
+    for (int k = 0; k < 3; k++) options.direction[k] = (k == axis) ? 1.0 : 0.0;
+  }
   solved_step = -1;    // the packing may have changed since the last run
 }
 
@@ -277,6 +311,10 @@ void ComputeVibrationPulse::solve()
       if (g.flag[k] & 2) in.detector.push_back(static_cast<int>(k));
       if (g.flag[k] & 4) in.fixed.push_back(static_cast<int>(k));
     }
+    // a wall is the node after every atom (the walker's order)
+    const int natoms = static_cast<int>(g.tags.size());
+    if (walls[0] >= 0) in.source.push_back(natoms + walls[0]);
+    if (walls[1] >= 0) in.detector.push_back(natoms + walls[1]);
     Progress progress = {lmp, &caller};
     in.progress = report_progress;
     in.progress_data = &progress;

@@ -7,7 +7,7 @@
 ------------------------------------------------------------------------- */
 
 /* ----------------------------------------------------------------------
-   compute ID group vibration/pulse source group-ID detector group-ID
+   compute ID group vibration/pulse source src detector det
            stiffness hertz E nu duration T [keyword value ...]
 
    The LAMMPS compute of the same name (doc/compute_vibration_pulse.rst):
@@ -20,7 +20,9 @@
    LAMMPS compute), and the results broadcast.  Outputs as in LAMMPS: a
    global array (samples rows: t, F_sig), a global vector (time step,
    steps, free DOFs) and, with snapshot, a per-atom array.  Source and
-   detector are groups of grains (no walls yet); grain-grain contacts only.
+   detector are groups of grains or walls (source|detector wall fix-ID: a
+   primitive wall's fix wall/gran ID or a mesh's fix mesh/surface ID); every
+   other wall is clamped.
 ------------------------------------------------------------------------- */
 
 #ifdef COMPUTE_CLASS
@@ -59,8 +61,11 @@ class ComputeVibrationPulse : public Compute {
   std::string caller;
   AcousticNetworkSettings settings;
   Acoustic::GatheredPulseInput options;    // direction, initial, method, duration, samples, ...
-  std::string group_names[3];              // source, detector, fixed ("" : none)
+  std::string group_names[3];              // source, detector, fixed ("" : none or a wall)
   int groupbits[3];
+  std::string wall_ids[2];                 // source, detector: a wall's ID, or ""
+  int walls[2];                            // their index in the network's walls, or -1
+  bool direction_given;                    // false: the default, normal to a source wall
   int ndof;
   class AcousticLiggghtsNetwork *network;
 

@@ -8,8 +8,10 @@
    array, printed with 20 digits) agrees to 1e-10 of its largest value, the
    global vector (time step, steps, free DOFs) likewise; method modes with
    initial velocity and displacement, model full and normal, an oblique
-   direction, and method integrate with damping (5 100 steps); and the
-   snapshot (per-atom array).  Measured: the same bits in every case.
+   direction, and method integrate with damping (5 100 steps); the
+   snapshot (per-atom array); a floor plane (fix wall/gran zplane in both
+   engines) as the source, as the detector, and clamped under a pulse
+   between grain groups.  Measured: the same bits in every case.
 2. 1 and 2 MPI ranks give the same signal, bit for bit.
 3. Bad inputs stop LIGGGHTS with an ERROR line naming the problem.
 
@@ -24,10 +26,11 @@ from test_liggghts_fix_acoustic_mindlin import E, NU, MU, NSOURCE, relative, run
 NGRAINS = 64
 SAMPLES = 101
 DURATION = 2e-3
-GROUPS = "group top id <> 49 64\ngroup middle id <> 17 48\n"
+GROUPS = "group top id <> 49 64\ngroup middle id <> 17 48\ngroup det id <> 1 4\n"
+SIZES = {"src": NSOURCE, "top": 16, "middle": 32, "det": 4}
 
 COMPUTE = """\
-compute p all vibration/pulse source src detector top stiffness hertz {E} {NU} duration {T} samples {n} {extra}
+compute p all vibration/pulse {ends} stiffness hertz {E} {NU} duration {T} samples {n} {extra}
 thermo_style custom step atoms c_p[1] c_p[2] c_p[3] c_p[1][2]
 thermo_modify format float %.17g
 {peratom}
@@ -66,30 +69,46 @@ timestep 1e-6
 group src id <> 1 {NSOURCE}
 """
 
+GRAINS = "source src detector top"
+# a floor plane under the packing, overlapping its bottom layer (as the fix's wall test)
+Z = 0.012 * base.D
+LIGGGHTS_FLOOR = ("fix floor all wall/gran model hertz tangential history primitive type 1 "
+                  "zplane %.17g\n" % Z)
+LAMMPS_FLOOR = ("fix floor all wall/gran granular hertz/material {E} 0.5 {NU} tangential "
+                "linear_history/acoustic 1.0 0.0 {MU} zplane %.17g NULL\n" % Z)
+
 CASES = [
-    ("velocity full", "model full"),
-    ("displacement full", "model full initial displacement"),
-    ("normal oblique", "model normal direction 1 0.5 2 method modes"),
-    ("damped integrate", "model full damping 0.05 method integrate"),
-    ("snapshot", "model full snapshot 5e-4"),
+    ("velocity full", GRAINS, "model full"),
+    ("displacement full", GRAINS, "model full initial displacement"),
+    ("normal oblique", GRAINS, "model normal direction 1 0.5 2 method modes"),
+    ("damped integrate", GRAINS, "model full damping 0.05 method integrate"),
+    ("snapshot", GRAINS, "model full snapshot 5e-4"),
+    ("floor source", "source wall floor detector top", "model full"),
+    ("floor detector", "source top detector wall floor", "model full initial displacement"),
+    # the pulse from the top reaches 4 grains of the bottom layer through its
+    # 12 others, which stand on the clamped floor
+    ("grains on a clamped floor", "source top detector det", "model full"),
 ]
 
 
-def compute_lines(extra, peratom):
-    return COMPUTE.format(E=E, NU=NU, T=DURATION, n=SAMPLES, extra=extra, peratom=peratom)
+def compute_lines(ends, extra, peratom):
+    return COMPUTE.format(ends=ends, E=E, NU=NU, T=DURATION, n=SAMPLES, extra=extra,
+                          peratom=peratom)
 
 
-def liggghts_deck(extra="model full", peratom=False, command=None):
-    body = GROUPS + (command if command is not None else
-                     compute_lines(extra, LIGGGHTS_PERATOM if peratom else ""))
+def liggghts_deck(extra="model full", peratom=False, command=None, ends=GRAINS, floor=False):
+    body = GROUPS + (LIGGGHTS_FLOOR if floor else "") + (
+        command if command is not None else
+        compute_lines(ends, extra, LIGGGHTS_PERATOM if peratom else ""))
     # the deck runs itself (run 0 inside the compute's lines)
     return base.LIGGGHTS_DECK.format(E=E, NU=NU, MU=MU, NSOURCE=NSOURCE, normal="hertz",
                                      tangential="history", fix=body, outputs="", run="")
 
 
-def lammps_deck(extra, peratom=False):
+def lammps_deck(extra, peratom=False, ends=GRAINS, floor=False):
     return (LAMMPS_HEAD.format(E=E, NU=NU, MU=MU, NSOURCE=NSOURCE) + GROUPS +
-            compute_lines(extra, LAMMPS_PERATOM if peratom else ""))
+            (LAMMPS_FLOOR.format(E=E, NU=NU, MU=MU) if floor else "") +
+            compute_lines(ends, extra, LAMMPS_PERATOM if peratom else ""))
 
 
 def signal(directory):
@@ -124,12 +143,13 @@ def exes():
 # --------------------------------------------------------------------------
 # 1. one packing, two engines
 
-@pytest.mark.parametrize("name,extra", CASES, ids=[c[0] for c in CASES])
-def test_same_signal_as_lammps(tmp_path, exes, name, extra):
+@pytest.mark.parametrize("name,ends,extra", CASES, ids=[c[0] for c in CASES])
+def test_same_signal_as_lammps(tmp_path, exes, name, ends, extra):
     lig, lmp = exes
     peratom = "snapshot" in extra
-    run(lig, str(tmp_path / "liggghts"), liggghts_deck(extra, peratom))
-    run(lmp, str(tmp_path / "lammps"), lammps_deck(extra, peratom))
+    floor = "floor" in name
+    run(lig, str(tmp_path / "liggghts"), liggghts_deck(extra, peratom, ends=ends, floor=floor))
+    run(lmp, str(tmp_path / "lammps"), lammps_deck(extra, peratom, ends=ends, floor=floor))
     a, b = signal(str(tmp_path / "liggghts")), signal(str(tmp_path / "lammps"))
     assert [r[0] for r in a] == [r[0] for r in b]
     assert abs(a[-1][0] - DURATION) <= 1e-15 * DURATION
@@ -141,7 +161,11 @@ def test_same_signal_as_lammps(tmp_path, exes, name, extra):
     assert largest > 0.0
     assert worst <= 1e-10
     ndof = 6 if "full" in extra else 3
-    assert ta[4] == tb[4] == ndof * (NGRAINS - 2 * NSOURCE)
+    words = ends.split()
+    groups = [words[k + 1] for k in range(len(words) - 1)
+              if words[k] in ("source", "detector") and words[k + 1] != "wall"]
+    prescribed = sum(SIZES[g] for g in groups)
+    assert ta[4] == tb[4] == ndof * (NGRAINS - prescribed)
     assert ta[3] == tb[3]                          # steps (integrate), 0 (modes)
     assert relative(ta[2], tb[2]) <= 1e-10         # the time step of integrate
     if peratom:
@@ -171,7 +195,10 @@ def test_one_and_two_ranks(tmp_path, exes, extra):
 HEAD = "compute p all vibration/pulse "
 STIFF = " stiffness hertz 1e7 0.3 "
 BAD = [
-    ("source wall", HEAD + "source wall w detector top" + STIFF + "duration 1", "walls are not yet"),
+    ("source wall", HEAD + "source wall w detector top" + STIFF + "duration 1\nrun 0",
+     "source wall w is not a wall of the vibration network"),
+    ("same wall", LIGGGHTS_FLOOR + HEAD + "source wall floor detector wall floor" + STIFF +
+     "duration 1\nrun 0", "the source and the detector are the same wall floor"),
     ("no source", HEAD + "detector top" + STIFF + "duration 1", "'source' belongs"),
     ("no group", HEAD + "source nowhere detector top" + STIFF + "duration 1", "no group 'nowhere'"),
     ("no duration", HEAD + "source src detector top" + STIFF, "duration T"),
