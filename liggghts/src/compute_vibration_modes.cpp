@@ -19,6 +19,7 @@
 #include "memory.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -144,7 +145,7 @@ ComputeVibrationModes::ComputeVibrationModes(LAMMPS *lmp, int &iarg, int narg, c
   scalar_flag = 1;
   extscalar = 0;
   if (!kpm) {
-    nfree_defined = free_dofs_now();
+    nfree_defined = free_dofs_now(false);
     vector_flag = 1;
     size_vector = lanczos ? options.nmodes : nfree_defined;
     extvector = 0;
@@ -179,10 +180,12 @@ ComputeVibrationModes::~ComputeVibrationModes()
 }
 
 /* ----------------------------------------------------------------------
-   free DOFs of the group (its atoms not in the fixed group)
+   free DOFs of the group (its atoms not in the fixed group); check: stop
+   with an ERROR if the group is empty or the fixed group is not in it
+   (not when the compute is defined: the grains may be inserted later)
 ------------------------------------------------------------------------- */
 
-int ComputeVibrationModes::free_dofs_now()
+int ComputeVibrationModes::free_dofs_now(bool check)
 {
   double counts_local[3] = {0.0, 0.0, 0.0}, counts[3];
   for (int i = 0; i < atom->nlocal; i++) {
@@ -193,6 +196,7 @@ int ComputeVibrationModes::free_dofs_now()
   }
   MPI_Allreduce(counts_local, counts, 3, MPI_DOUBLE, MPI_SUM, world);
   char what[512];
+  if (!check) return static_cast<int>(std::min(2e9, ndof * (counts[0] - counts[1])));
   if (counts[0] == 0.0) {
     snprintf(what, sizeof(what), "%s: compute group %s has no atom", caller.c_str(),
              group->names[igroup]);
@@ -230,12 +234,13 @@ void ComputeVibrationModes::init()
     }
     fixed_groupbit = group->bitmask[ifixed];
   }
-  const int nfree = free_dofs_now();
+  const int nfree = free_dofs_now(true);
   if (options.method == "dense" && nfree != nfree_defined) {
     char what[512];
     snprintf(what, sizeof(what),
              "%s: the group has %d free DOFs now, %d when the compute was defined; LIGGGHTS's "
-             "global vectors have a fixed length: define the compute again (uncompute, compute)",
+             "global vectors have a fixed length: define the compute after the grains exist, "
+             "or again (uncompute, compute) when their number changed",
              caller.c_str(), nfree, nfree_defined);
     error->all(FLERR, what);
   }

@@ -81,7 +81,7 @@ class ComputeVibrationModes : public Compute {
   double **shape_atom;
   int nmax;
 
-  int free_dofs_now();
+  int free_dofs_now(bool check);
   void solve(bool need_shapes);
 };
 

@@ -20,6 +20,9 @@
    compared on f_max.
 2. 1 and 2 MPI ranks give the same frequencies and shape, bit for bit.
 3. Bad inputs stop LIGGGHTS with an ERROR line naming the problem.
+4. Method kpm (64 moments, 4 vectors, seed 11): the histogram the same in
+   both engines; a group whose free DOFs changed after the compute was
+   defined (LIGGGHTS's global vectors have a fixed length) is an ERROR.
 
 Needs ACOUSTIC_LIGGGHTS and ACOUSTIC_LMP (see the fix's test)."""
 import os
@@ -246,3 +249,42 @@ def test_bad_input(tmp_path, exes, name, command, message):
     assert errors, proc.stdout[-2000:]
     print(errors[0])
     assert message in errors[0], errors[0]
+
+
+# --------------------------------------------------------------------------
+# 4. method kpm (no vector, no local rows: the histogram through thermo), and
+#    a group whose free DOFs change after the compute is defined
+
+def kpm_deck(deck):
+    lines = [line for line in deck.splitlines() if not line.startswith(("dump l", "dump_modify l"))]
+    deck = "\n".join(lines) + "\n"
+    return deck.replace("c_m c_m[1] ", "c_m ")
+
+
+def test_kpm_same_as_lammps(tmp_path, exes):
+    lig, lmp = exes
+    extra = "model full method kpm bins 20 0 20000 moments 64 vectors 4 seed 11"
+    array = "c_m[1][2]"
+    ldeck = kpm_deck(liggghts_deck(extra, nbins=20)).replace(array, "c_m[3][2] c_m[7][2] c_m[7][3]")
+    mdeck = kpm_deck(lammps_deck(extra, nbins=20)).replace(array, "c_m[3][2] c_m[7][2] c_m[7][3]")
+    run(lig, str(tmp_path / "liggghts"), ldeck)
+    run(lmp, str(tmp_path / "lammps"), mdeck)
+    ta, tb = thermo_line(str(tmp_path / "liggghts")), thermo_line(str(tmp_path / "lammps"))
+    print("kpm: LIGGGHTS %s, LAMMPS %s" % (ta, tb))
+    assert ta[4] > 0.0 and ta[5] > 0.0
+    assert max(relative(x, y) for x, y in zip(ta[2:], tb[2:])) <= 1e-10
+
+
+def test_group_changed_since_defined(tmp_path, exes):
+    lig, _ = exes
+    command = ("compute m all vibration/modes stiffness hertz 1e7 0.3 fixed src\n"
+               "thermo_style custom step c_m[1]\nrun 0\ndelete_atoms group top")
+    deck = base.LIGGGHTS_DECK.format(E=E, NU=NU, MU=MU, NSOURCE=NSOURCE, normal="hertz",
+                                     tangential="history",
+                                     fix="group top id <> 49 64\n" + command, outputs="",
+                                     run="run 0")
+    proc = run(lig, str(tmp_path), deck, expect_error=True)
+    errors = [line for line in proc.stdout.splitlines() if line.startswith("ERROR")]
+    assert errors, proc.stdout[-2000:]
+    print(errors[0])
+    assert "free DOFs now, 144 when the compute was defined" in errors[0], errors[0]

@@ -180,11 +180,14 @@ def test_same_signal_as_lammps(tmp_path, exes, name, ends, extra):
 # --------------------------------------------------------------------------
 # 2. 1 and 2 ranks
 
-@pytest.mark.parametrize("extra", ["model full", "model full damping 0.05"])
-def test_one_and_two_ranks(tmp_path, exes, extra):
+@pytest.mark.parametrize("ends,extra,floor", [
+    (GRAINS, "model full", False), (GRAINS, "model full damping 0.05", False),
+    ("source wall floor detector top", "model full", True)])
+def test_one_and_two_ranks(tmp_path, exes, ends, extra, floor):
     lig, _ = exes
-    run(lig, str(tmp_path / "np1"), liggghts_deck(extra))
-    run(lig, str(tmp_path / "np2"), liggghts_deck(extra), nranks=2)
+    deck = liggghts_deck(extra, ends=ends, floor=floor)
+    run(lig, str(tmp_path / "np1"), deck)
+    run(lig, str(tmp_path / "np2"), deck, nranks=2)
     assert signal(str(tmp_path / "np1")) == signal(str(tmp_path / "np2"))
     assert thermo_line(str(tmp_path / "np1")) == thermo_line(str(tmp_path / "np2"))
 
