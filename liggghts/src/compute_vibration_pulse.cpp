@@ -68,6 +68,7 @@ ComputeVibrationPulse::ComputeVibrationPulse(LAMMPS *lmp, int &iarg, int narg, c
   caller = std::string("compute vibration/pulse ") + id;
   groupbits[0] = groupbits[1] = groupbits[2] = 0;
   walls[0] = walls[1] = -1;
+  wall_is_mesh[0] = wall_is_mesh[1] = false;
   AcousticLiggghtsArguments args(lmp, caller, narg, arg, iarg);
   parse_endpoint(args, 0, "source");
   parse_endpoint(args, 1, "detector");
@@ -172,20 +173,21 @@ ComputeVibrationPulse::~ComputeVibrationPulse()
 }
 
 /* ----------------------------------------------------------------------
-   source|detector group-ID | wall fix-ID
+   source|detector group-ID | wall fix-ID | mesh fix-ID
 ------------------------------------------------------------------------- */
 
 void ComputeVibrationPulse::parse_endpoint(AcousticLiggghtsArguments &args, int which,
                                            const char *word)
 {
   if (!args.more() || strcmp(args.keyword(), word) != 0)
-    args.error_all("expected compute ID group-ID vibration/pulse source group-ID|wall fix-ID "
-                   "detector group-ID|wall fix-ID stiffness hertz E nu duration T [keyword "
-                   "value ...], got '%s' where '%s' belongs",
+    args.error_all("expected compute ID group-ID vibration/pulse source group-ID|wall "
+                   "fix-ID|mesh fix-ID detector group-ID|wall fix-ID|mesh fix-ID stiffness "
+                   "hertz E nu duration T [keyword value ...], got '%s' where '%s' belongs",
                    args.more() ? args.keyword() : "", word);
   args.take(word, 1);
-  if (strcmp(args.word(1), "wall") == 0) {
+  if (strcmp(args.word(1), "wall") == 0 || strcmp(args.word(1), "mesh") == 0) {
     args.take(word, 2);
+    wall_is_mesh[which] = strcmp(args.word(1), "mesh") == 0;
     wall_ids[which] = args.word(2);
     args.next();
     return;
@@ -260,12 +262,22 @@ void ComputeVibrationPulse::init()
   for (int e = 0; e < 2; e++) {
     walls[e] = -1;
     if (wall_ids[e].empty()) continue;
+    const char *kind = wall_is_mesh[e] ? "mesh" : "wall";
     walls[e] = network->wall_index(wall_ids[e]);
     if (walls[e] < 0) {
       snprintf(what, sizeof(what),
-               "%s: %s wall %s is not a wall of the vibration network (give the ID of a fix "
-               "wall/gran primitive wall, or of the fix mesh/surface of a mesh wall)",
-               caller.c_str(), ENDPOINTS[e], wall_ids[e].c_str());
+               "%s: %s %s %s is not a wall of the vibration network (give 'wall <fix-ID>' of a "
+               "fix wall/gran primitive wall, or 'mesh <fix-ID>' of a fix mesh/surface used by "
+               "a fix wall/gran ... mesh)",
+               caller.c_str(), ENDPOINTS[e], kind, wall_ids[e].c_str());
+      error->all(FLERR, what);
+    }
+    const bool is_mesh = network->walls()[walls[e]].mesh != NULL;
+    if (is_mesh != wall_is_mesh[e]) {
+      snprintf(what, sizeof(what), "%s: %s %s %s is a %s: write '%s %s %s'", caller.c_str(),
+               ENDPOINTS[e], kind, wall_ids[e].c_str(),
+               is_mesh ? "mesh (fix mesh/surface)" : "primitive wall (fix wall/gran)",
+               ENDPOINTS[e], is_mesh ? "mesh" : "wall", wall_ids[e].c_str());
       error->all(FLERR, what);
     }
   }
@@ -279,8 +291,8 @@ void ComputeVibrationPulse::init()
     const int axis = network->walls()[walls[0]].plane_axis;
     if (axis < 0) {
       snprintf(what, sizeof(what),
-               "%s: source wall %s is a mesh, whose surface has no single normal; give the "
-               "direction of the pulse with the keyword direction",
+               "%s: source mesh %s has no single normal; give the direction of the pulse "
+               "with the keyword direction",
                caller.c_str(), wall_ids[0].c_str());
       error->all(FLERR, what);
     }

@@ -20,9 +20,10 @@
    LAMMPS compute), and the results broadcast.  Outputs as in LAMMPS: a
    global array (samples rows: t, F_sig), a global vector (time step,
    steps, free DOFs) and, with snapshot, a per-atom array.  Source and
-   detector are groups of grains or walls (source|detector wall fix-ID: a
-   primitive wall's fix wall/gran ID or a mesh's fix mesh/surface ID); every
-   other wall is clamped.
+   detector are groups of grains or walls, as for fix acoustic/mindlin's
+   source (wall fix-ID: a primitive wall's fix wall/gran; mesh fix-ID: a
+   fix mesh/surface of a fix wall/gran ... mesh); every other wall is
+   clamped.
 ------------------------------------------------------------------------- */
 
 #ifdef COMPUTE_CLASS
@@ -64,6 +65,7 @@ class ComputeVibrationPulse : public Compute {
   std::string group_names[3];              // source, detector, fixed ("" : none or a wall)
   int groupbits[3];
   std::string wall_ids[2];                 // source, detector: a wall's ID, or ""
+  bool wall_is_mesh[2];                    // given as 'mesh ID' (else 'wall ID')
   int walls[2];                            // their index in the network's walls, or -1
   bool direction_given;                    // false: the default, normal to a source wall
   int ndof;

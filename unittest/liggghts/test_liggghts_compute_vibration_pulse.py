@@ -11,7 +11,9 @@
    direction, and method integrate with damping (5 100 steps); the
    snapshot (per-atom array); a floor plane (fix wall/gran zplane in both
    engines) as the source, as the detector, and clamped under a pulse
-   between grain groups.  Measured: the same bits in every case.
+   between grain groups.  Measured: the same bits in every case.  An STL
+   mesh floor as the source (source mesh ID) gives the primitive floor's
+   signal in LIGGGHTS.
 2. 1 and 2 MPI ranks give the same signal, bit for bit.
 3. Bad inputs stop LIGGGHTS with an ERROR line naming the problem.
 
@@ -178,6 +180,46 @@ def test_same_signal_as_lammps(tmp_path, exes, name, ends, extra):
 
 
 # --------------------------------------------------------------------------
+# 1b. a mesh floor (an STL square of two triangles in the floor's plane) as
+#     the source gives the primitive floor's signal (LAMMPS has no mesh)
+
+MESH_FLOOR = ("fix stl all mesh/surface file floor.stl type 1\n"
+              "fix floor all wall/gran model hertz tangential history mesh n_meshes 1 "
+              "meshes stl\n")
+
+
+def write_floor_stl(directory):
+    os.makedirs(directory, exist_ok=True)
+    lo, hi = -base.D, (base.NSIDE + 1) * base.D
+    with open(os.path.join(directory, "floor.stl"), "w") as f:
+        f.write("solid floor\n")
+        for tri in (((lo, lo), (hi, lo), (hi, hi)), ((lo, lo), (hi, hi), (lo, hi))):
+            f.write(" facet normal 0 0 1\n  outer loop\n")
+            for x, y in tri:
+                f.write("   vertex %.17g %.17g %.17g\n" % (x, y, Z))
+            f.write("  endloop\n endfacet\n")
+        f.write("endsolid floor\n")
+
+
+def test_mesh_floor_source(tmp_path, exes):
+    lig, _ = exes
+    extra = "model full direction 0 0 1"
+    run(lig, str(tmp_path / "primitive"),
+        liggghts_deck(extra, ends="source wall floor detector top", floor=True))
+    write_floor_stl(str(tmp_path / "mesh"))
+    deck = liggghts_deck(extra, ends="source mesh stl detector top").replace(
+        "compute p all", MESH_FLOOR + "compute p all")
+    run(lig, str(tmp_path / "mesh"), deck)
+    a, b = signal(str(tmp_path / "mesh")), signal(str(tmp_path / "primitive"))
+    largest = max(abs(r[1]) for r in b)
+    worst = max(abs(x[1] - y[1]) for x, y in zip(a, b)) / largest
+    print("mesh floor against primitive floor: largest difference %.3g of max |F_sig| %.4g"
+          % (worst, largest))
+    assert largest > 0.0 and worst <= 1e-10
+    assert thermo_line(str(tmp_path / "mesh"))[4] == 6 * (NGRAINS - NSOURCE)
+
+
+# --------------------------------------------------------------------------
 # 2. 1 and 2 ranks
 
 @pytest.mark.parametrize("ends,extra,floor", [
@@ -200,6 +242,12 @@ STIFF = " stiffness hertz 1e7 0.3 "
 BAD = [
     ("source wall", HEAD + "source wall w detector top" + STIFF + "duration 1\nrun 0",
      "source wall w is not a wall of the vibration network"),
+    ("mesh as wall", MESH_FLOOR + HEAD + "source wall stl detector top" + STIFF +
+     "duration 1\nrun 0", "source wall stl is a mesh (fix mesh/surface): write 'source mesh stl'"),
+    ("wall as mesh", LIGGGHTS_FLOOR + HEAD + "source mesh floor detector top" + STIFF +
+     "duration 1\nrun 0", "write 'source wall floor'"),
+    ("mesh without direction", MESH_FLOOR + HEAD + "source mesh stl detector top" + STIFF +
+     "duration 1\nrun 0", "give the direction of the pulse"),
     ("same wall", LIGGGHTS_FLOOR + HEAD + "source wall floor detector wall floor" + STIFF +
      "duration 1\nrun 0", "the source and the detector are the same wall floor"),
     ("no source", HEAD + "detector top" + STIFF + "duration 1", "'source' belongs"),
@@ -227,6 +275,7 @@ BAD = [
 @pytest.mark.parametrize("name,command,message", BAD, ids=[b[0] for b in BAD])
 def test_bad_input(tmp_path, exes, name, command, message):
     lig, _ = exes
+    write_floor_stl(str(tmp_path))
     proc = run(lig, str(tmp_path), liggghts_deck(command=command), expect_error=True)
     errors = [line for line in proc.stdout.splitlines() if line.startswith("ERROR")]
     assert errors, proc.stdout[-2000:]
