@@ -40,7 +40,8 @@ using namespace LAMMPS_NS;
 
 namespace {
 const int GRAIN_WORDS = 4;      // tag, mass, radius, flag
-const int CONTACT_WORDS = 7;    // tag lo, tag hi (-1 - w for wall w), normal (3, from hi to lo), k_n, k_t
+// tag lo, tag hi (-1 - w for wall w), normal (3, from hi to lo), k_n, k_t
+const int CONTACT_WORDS = 7;
 const char *const FACTOR_NAME = "acousticFrictionReduction";
 }    // namespace
 
