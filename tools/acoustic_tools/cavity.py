@@ -680,3 +680,11 @@ def spectrum_position(centres, density, freq, top=0.999):
     below = float(np.interp(freq, edges, cumulative))
     band = float(np.interp(top, cumulative, edges))
     return below, band
+
+
+def principal_direction(axx, ayy, axy):
+    """The angle (radians, from x, in (-pi/2, pi/2]) of the direction of
+    the largest eigenvalue of a symmetric 2D tensor field: 0.5 atan2(2 axy,
+    axx - ayy) (the major compression of a stress counted positive in
+    compression, the major extension of a strain rate)"""
+    return 0.5 * np.arctan2(2 * np.asarray(axy, float), np.asarray(axx, float) - np.asarray(ayy, float))

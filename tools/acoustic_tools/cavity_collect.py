@@ -171,7 +171,8 @@ def local_rheology(path, p, h):
     X, Y = np.meshgrid(x, y)
     L = p["L"]
     region = (X > 0.25 * L) & (X < 0.75 * L) & (Y > 0.5 * h) & (Y < h - p["d"])
-    return {"x": x, "y": y, "I": I, "mu": mu, "region": (I[region], mu[region]), "h": h, "L": L}
+    return {"x": x, "y": y, "I": I, "mu": mu, "region": (I[region], mu[region]), "h": h, "L": L,
+            "stress": (sxx, syy, sxy), "rate": (Dxx, Dyy, Dxy)}
 
 
 def read_runs(top):
@@ -353,8 +354,8 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
 
 def figures(runs, fit, figdir, fit30=None, eq5=None, mu_fit=None):
     """Paper 004's figures into figdir: those of the H/d = 10 scan (Figs. 2,
-    3, 9, 10, 12, 13, 14, Phi*) and, when there are runs of the H/d = 30
-    scan, the same with the suffix _H30 and Figs. 4, 6, 8, 11, 19, 20"""
+    3, 8, 9, 10, 12, 13, 14, 20, Phi*) and, when there are runs of the
+    H/d = 30 scan, the same with the suffix _H30 and Figs. 4, 5, 6, 11, 19"""
     os.makedirs(figdir, exist_ok=True)
     scan = {n: v for n, v in runs.items() if n.startswith("scan/")}
     if scan:
@@ -435,6 +436,10 @@ def _h30_figures(h30, figdir, eq5, mu_fit):
             rh = d["rheology"]
             figs.fig6_mu_map(rh["x"], rh["y"], rh["I"], rh["mu"], os.path.join(figdir, f"fig6{label}_mu_map_H30.png"),
                              rh["L"], rh["h"], title=f"({label}) $I_M$ = {r['I_M']:.2g}, $N_U$ = {r['NU']:g}, $N_P$ = {r['NP']:.3g}")
+            if label == "b":
+                figs.fig5_orientations(rh["x"], rh["y"], *rh["stress"], *rh["rate"],
+                                       os.path.join(figdir, "fig5_orientations_H30.png"), rh["L"], rh["h"],
+                                       title=f"$I_M$ = {r['I_M']:.2g}, $N_U$ = {r['NU']:g}, $N_P$ = {r['NP']:.3g}")
 
 
 def scan_fit(runs, prefixes=("scan/",)):

@@ -20,6 +20,8 @@ or a user's own runs can call them:
                           several I_M, the inset against (U/d) Delta t
   fig11_particle_pairs    particle-scale PDFs of several (N_U, N_P) at one I_M
   fig20_loglinear         the PDFs of Figs. 12 and 13 on a log-linear scale
+  fig5_orientations       the principal directions of the strain rate and
+                          of the stress over the cavity
   fig6_mu_map             (mu_loc - mu_th) / mu_th over the cavity
   fig19_mu_I              mu_loc against I in the region of Fig. 19, Eq. 20
 
@@ -389,4 +391,29 @@ def fig19_mu_I(points, path, fit=None, title="the region of Fig. 19"):
     ax.set_ylabel(r"$\mu_{loc}$ (Eq. 19)")
     ax.set_title(title)
     ax.legend(frameon=False, fontsize=6)
+    _save(fig, path)
+
+
+def fig5_orientations(x, y, sxx, syy, sxy, Dxx, Dyy, Dxy, path, L, h, every=3, title=""):
+    """Fig. 5: the principal directions (segments, every `every` bins) of
+    (a) the strain rate (major extension) and (b) the stress (major
+    compression, stress counted positive in compression) over the cavity"""
+    X, Y = np.meshgrid(x, y)
+    keep = (Y > 0) & (Y < h)
+    sub = (slice(None, None, every), slice(None, None, every))
+    fig, axes = plt.subplots(2, 1, figsize=(9.0, 2 * (9.0 * h / L + 0.8)))
+    for ax, (a, b, c), label in ((axes[0], (Dxx, Dyy, Dxy), "(a) strain rate, major extension"),
+                                 (axes[1], (sxx, syy, sxy), "(b) stress, major compression")):
+        theta = cavity.principal_direction(a, b, c)
+        good = keep & np.isfinite(theta)
+        u, v = np.where(good, np.cos(theta), np.nan), np.where(good, np.sin(theta), np.nan)
+        ax.quiver(X[sub], Y[sub], u[sub], v[sub], pivot="middle", headwidth=0, headlength=0, headaxislength=0,
+                  scale=60, width=0.002)
+        ax.set_xlim(0.0, L)
+        ax.set_ylim(0.0, h)
+        ax.set_aspect("equal")
+        ax.set_title(label, fontsize=9)
+    axes[1].set_xlabel("x (m)")
+    if title:
+        fig.suptitle(title)
     _save(fig, path)

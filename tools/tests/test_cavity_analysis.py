@@ -130,7 +130,7 @@ def test_new_figures_are_written(tmp_path):
     from acoustic_tools import cavity_figures as cf
 
     rng = np.random.default_rng(2)
-    paths = {name: tmp_path / f"{name}.png" for name in ("f4", "f6", "f8", "f11", "f14", "f19", "f20")}
+    paths = {name: tmp_path / f"{name}.png" for name in ("f4", "f5", "f6", "f8", "f11", "f14", "f19", "f20")}
     ell = np.array([0.2, 0.3, 0.4, 0.5])
     cf.fig4_force_vortex(ell, 0.88 - 0.5 * ell, [0.3, 0.1, 0.03, 0.01], paths["f4"], fit=(0.88, 0.5))
     C = 0.9 ** np.arange(200)
@@ -145,6 +145,7 @@ def test_new_figures_are_written(tmp_path):
     X, Y = np.meshgrid(x, y)
     I = 1e-3 + 0 * X
     cf.fig6_mu_map(x, y, I, cavity.mu_I_model(I, *cavity.PAPER_MU_I) * (1 + 0.3 * np.sin(X * 40)), paths["f6"], 0.15, 0.03)
+    cf.fig5_orientations(x, y, 0 * X + 2, 0 * X + 1, 0.5 + 0 * X, 0 * X, 0 * X, 1 + 0 * X, paths["f5"], 0.15, 0.03)
     Ip = np.logspace(-4, -1, 100)
     cf.fig19_mu_I({1e-3: (Ip, cavity.mu_I_model(Ip, 0.12, 0.4, 0.13))}, paths["f19"], fit=(0.12, 0.4, 0.13))
     wall = {0.3: np.where(rng.random(3000) < 0.1, 0.0, rng.exponential(1.0, 3000)), 1e-3: rng.normal(1, 0.3, 3000)}
@@ -188,3 +189,12 @@ def test_spectrum_position(tmp_path):
                     "100 2\n1 1000 1e-4\n2 3000 4e-4\n")
     x, dens = cavity.read_modes_histogram(str(path))
     assert np.allclose(x, [1000, 3000]) and np.allclose(dens, [1e-4, 4e-4])
+
+
+def test_principal_direction():
+    # simple shear vx = gamma y: extension along 45 degrees; a stress larger along y: its major axis at 90 degrees
+    assert cavity.principal_direction(0.0, 0.0, 1.0) == pytest.approx(math.pi / 4)
+    assert abs(cavity.principal_direction(1.0, 2.0, 0.0)) == pytest.approx(math.pi / 2)
+    assert cavity.principal_direction(3.0, 1.0, 0.0) == pytest.approx(0.0)
+    # the resisting stress of that shear (sxy = -tau, compression positive): major compression at -45 degrees
+    assert cavity.principal_direction(1.0, 1.0, -0.3) == pytest.approx(-math.pi / 4)
