@@ -16,13 +16,16 @@
    Use:
      AcousticLiggghtsNetwork net(lmp, "fix acoustic/mindlin us");
      net.set_stiffness(E, nu, kappa_scale, ratio);
-     net.init(true);                    // in the style's init(): checks, offsets
+     net.init(true, modify->find_fix(id));   // in the style's init(): checks,
+                                        // offsets, walls (a compute: init(false))
      net.collect(groupbit);             // this processor's contacts
      AcousticLiggghtsNetwork::Gathered g;
      net.gather(groupbit, flagbit, model, g);   // on rank 0: the facade's input
-     ... rank 0: add g.input.prescribed, set frequency, solve_gathered_drive ...
-     net.broadcast(g.tags, q, ndof);    // every rank: tags and DOF values
-     for each net.contacts()[k]: grain_index(g.tags, tag) -> its q, the factor
+     ... rank 0: add g.input.prescribed (the walls: node g.tags.size() + w),
+         set the frequency, solve_gathered_drive -> q ...
+     net.broadcast(g.tags, q);          // every rank: tags and DOF values
+     for each net.contacts()[k]: grain_index(g.tags, tag) (a wall:
+         g.tags.size() + wall) -> its q, the factor into *slot
 
    What a contact is (collect): a pair (i, j) of pair gran's neighbor list
    (newton off: a pair with a ghost j is listed on both processors), both
