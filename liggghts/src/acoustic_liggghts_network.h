@@ -60,7 +60,8 @@
    and the wall's type), k_n at R* = r_i (a flat body of infinite radius,
    as the LAMMPS fix), mu coeffFrict of the two types, slot the 1 - s of
    the wall's contact history when its tangential model is history/acoustic
-   (else NULL: that wall keeps its friction, as in LAMMPS).
+   (else NULL: that wall keeps its friction, as in LAMMPS; NULL for every
+   contact, pair or wall, when init was told the factor is not needed).
    - primitive walls: the grains of the wall fix's group whose overlap
      with the wall, as PrimitiveWall::resolveContact gives it (the wall
      fix's own call), is > 0; history: the wall fix's per-atom history
