@@ -159,12 +159,16 @@ def analyse(run, settings, p):
 
 
 def local_rheology(path, p, h):
-    """The local mu(I) of one run from its TAG.stress (blocks after nskip):
-    {"x", "y", "I", "mu" (grids), "region": (I, mu) of paper 004 Fig. 19's
-    region (the upper half of the packing, a band L/2 wide centred in x)}"""
+    """The local mu(I) of one run from its TAG.stress (blocks after nskip,
+    averaged: the fields of the time-averaged stress and velocity, smoothed
+    by paper 004's kernel, App. A): {"x", "y", "I", "mu" (grids), "region":
+    (I, mu) of paper 004 Fig. 19's region (the upper half of the packing, a
+    band L/2 wide centred in x), "stress", "rate"}"""
     blocks = lammps_output.read_ave_chunk(path)
     cols = cavity.mean_blocks(blocks, first_step=p["nskip"])
-    x, y, sxx, syy, sxy, vx, vy = cavity.stress_and_velocity_fields(cols, p["d"] * p["d"], p["d"])
+    x, y, *fields = cavity.stress_and_velocity_fields(cols, p["d"] * p["d"], p["d"])
+    # paper 004 App. A: a Gaussian kernel of standard deviation d/2 on the mesh of d
+    sxx, syy, sxy, vx, vy = (cavity.smooth_field(f, 0.5) for f in fields)
     Dxx, Dyy, Dxy = cavity.strain_rate_2d(x, y, vx, vy)
     rho_p = 2500.0
     I, mu = cavity.local_rheology(sxx, syy, sxy, Dxx, Dyy, Dxy, p["d"], rho_p)
@@ -417,6 +421,8 @@ def _scan_figures(scan, fit, figdir, suffix, title):
 
 def _h30_figures(h30, figdir, eq5, mu_fit):
     rows = [r for r, _ in h30.values()]
+    figs.fig_memory(rows, by_im(h30), os.path.join(figdir, "fig_memory_H30.png"),
+                    title="force memory on the wall portions, H/d = 30")
     figs.fig4_force_vortex([r.get("ell_over_L", np.nan) for r in rows], [r["Fnorm"] for r in rows],
                            [r["I_M"] for r in rows], os.path.join(figdir, "fig4_force_vortex_H30.png"),
                            fit=None if eq5 is None else eq5[0], title="H/d = 30")

@@ -20,6 +20,9 @@ or a user's own runs can call them:
                           several I_M, the inset against (U/d) Delta t
   fig11_particle_pairs    particle-scale PDFs of several (N_U, N_P) at one I_M
   fig20_loglinear         the PDFs of Figs. 12 and 13 on a log-linear scale
+  fig_memory              <Delta t_c> against I_M in d/U and in seconds,
+                          each run by its N_U, the mean and standard error
+                          per I_M
   fig5_orientations       the principal directions of the strain rate and
                           of the stress over the cavity
   fig6_mu_map             (mu_loc - mu_th) / mu_th over the cavity
@@ -414,6 +417,38 @@ def fig5_orientations(x, y, sxx, syy, sxy, Dxx, Dyy, Dxy, path, L, h, every=3, t
         ax.set_aspect("equal")
         ax.set_title(label, fontsize=9)
     axes[1].set_xlabel("x (m)")
+    if title:
+        fig.suptitle(title)
+    _save(fig, path)
+
+
+def fig_memory(rows, groups, path, title=""):
+    """<Delta t_c> (mean over the portions) against I_M: (a) in units of
+    d/U, (b) in ms; rows: one dict per run (I_M, NU, dtc_mean_dU,
+    dtc_mean_s), marked by N_U; groups: I_M -> {"dtc_mean_dU": (mean, sem,
+    n), "dtc_mean_s": ...} (cavity_collect.by_im), drawn with error bars"""
+    fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.8))
+    markers = {}
+    for r in rows:
+        k = markers.setdefault(r["NU"], len(markers))
+        for ax, key, scale in ((axes[0], "dtc_mean_dU", 1.0), (axes[1], "dtc_mean_s", 1e3)):
+            ax.plot(r["I_M"], scale * r[key], "osd^v"[k % 5], color=f"C{k}", ms=4, alpha=0.7,
+                    label=f"$N_U$ = {r['NU']:g}" if ax is axes[0] else None)
+    ims = sorted(groups)
+    for ax, key, scale in ((axes[0], "dtc_mean_dU", 1.0), (axes[1], "dtc_mean_s", 1e3)):
+        mean = np.array([groups[im][key][0] for im in ims]) * scale
+        sem = np.array([groups[im][key][1] for im in ims]) * scale
+        ax.errorbar(ims, mean, yerr=np.nan_to_num(sem), fmt="k_", ms=14, capsize=3, lw=1, label="mean ± s.e.")
+        ax.set_xscale("log")
+        ax.set_xlabel(r"$I_M$")
+    handles, labels = axes[0].get_legend_handles_labels()
+    unique = dict(zip(labels, handles))
+    axes[0].legend(unique.values(), unique.keys(), frameon=False, fontsize=7)
+    axes[0].set_ylabel(r"$\langle \Delta t_c \rangle$ (d/U)")
+    axes[1].set_ylabel(r"$\langle \Delta t_c \rangle$ (ms)")
+    axes[1].set_yscale("log")
+    axes[0].set_title("(a) in units of d/U")
+    axes[1].set_title("(b) in seconds")
     if title:
         fig.suptitle(title)
     _save(fig, path)

@@ -130,8 +130,12 @@ def test_new_figures_are_written(tmp_path):
     from acoustic_tools import cavity_figures as cf
 
     rng = np.random.default_rng(2)
-    paths = {name: tmp_path / f"{name}.png" for name in ("f4", "f5", "f6", "f8", "f11", "f14", "f19", "f20")}
+    paths = {name: tmp_path / f"{name}.png" for name in ("f4", "f5", "f6", "f8", "f11", "f14", "f19", "f20", "mem")}
     ell = np.array([0.2, 0.3, 0.4, 0.5])
+    rows = [{"I_M": im, "NU": NU, "dtc_mean_dU": 2.0 / (1 + im / 0.01), "dtc_mean_s": 2e-3 / NU / (1 + im / 0.01)}
+            for im in (1e-3, 1e-2, 0.1) for NU in (1, 10)]
+    groups = {im: {"dtc_mean_dU": (1.0, 0.1, 2), "dtc_mean_s": (1e-3, np.nan, 1)} for im in (1e-3, 1e-2, 0.1)}
+    cf.fig_memory(rows, groups, paths["mem"])
     cf.fig4_force_vortex(ell, 0.88 - 0.5 * ell, [0.3, 0.1, 0.03, 0.01], paths["f4"], fit=(0.88, 0.5))
     C = 0.9 ** np.arange(200)
     cf.fig8_autocorrelation({1e-2: (1e-4, C, 1e-2), 0.3: (1e-4, C ** 3, 1e-3)}, paths["f8"])
@@ -198,3 +202,18 @@ def test_principal_direction():
     assert cavity.principal_direction(3.0, 1.0, 0.0) == pytest.approx(0.0)
     # the resisting stress of that shear (sxy = -tau, compression positive): major compression at -45 degrees
     assert cavity.principal_direction(1.0, 1.0, -0.3) == pytest.approx(-math.pi / 4)
+
+
+def test_smooth_field():
+    # a linear field is kept by a normalised kernel away from the edges; NaN bins stay NaN
+    # and do not leak into their neighbours
+    y, x = np.mgrid[0:20, 0:30].astype(float)
+    field = 2.0 * x + y
+    field[5, 5] = np.nan
+    out = cavity.smooth_field(field, 0.5)
+    assert np.isnan(out[5, 5]) and np.isfinite(out[5, 6])
+    far = (np.hypot(x - 5, y - 5) > 3) & (x > 2) & (x < 27) & (y > 2) & (y < 17)
+    assert np.allclose(out[far], field[far], atol=0.01)
+    # next to the empty bin the kernel is lopsided: within a fraction of the field's step
+    assert abs(out[5, 6] - field[5, 6]) < 1.0
+    assert np.allclose(cavity.smooth_field(np.ones((5, 5)), 1.0), 1.0)
