@@ -235,6 +235,42 @@ def by_im(runs, prefixes=H30_SCAN, digits=2):
     return out
 
 
+US_QUANTITIES = ("Fnorm", "dtc_mean_dU", "cv_wall", "skew_wall")
+
+
+def us_effects(runs, prefix="h30us/", quantities=US_QUANTITIES):
+    """The effect of the drive in the ultrasound set: for each (N_U, f > 0),
+    the differences x(f, seed) - x(0, seed) of each quantity over the
+    packings (seeds) that ran both (the same deposit: paired), their mean
+    and standard error: {(NU, freq): {quantity: (mean, sem, n)}}; also the
+    wall-scale Eq. 7 sigma ("eq7_wall_sigma") and where the drive falls in
+    the spectrum ("modes_below_drive", mean over the driven runs)"""
+    table = {}
+    for name, (r, _) in runs.items():
+        if name.startswith(prefix):
+            table[(r["NU"], r["freq"], r.get("seed", 1))] = r
+    out = {}
+    for (NU, freq, seed), r in sorted(table.items()):
+        if freq == 0:
+            continue
+        base = table.get((NU, 0.0, seed)) or table.get((NU, 0, seed))
+        entry = out.setdefault((NU, freq), {"_diffs": {}, "_below": []})
+        entry["_below"].append(r.get("modes_below_drive", np.nan))
+        if base is None:
+            continue
+        for q in quantities + ("eq7_wall_sigma",):
+            a = r["eq7_wall"]["sigma"] if q == "eq7_wall_sigma" else r.get(q, np.nan)
+            b = base["eq7_wall"]["sigma"] if q == "eq7_wall_sigma" else base.get(q, np.nan)
+            entry["_diffs"].setdefault(q, []).append(a - b)
+    result = {}
+    for key, entry in out.items():
+        row = {q: _mean_sem(v) for q, v in entry["_diffs"].items()}
+        row["modes_below_drive"] = _mean_sem(entry["_below"])
+        row["I_M"] = next(r["I_M"] for (NU, f, _), r in table.items() if (NU, f) == key)
+        result[key] = row
+    return result
+
+
 def _pm(value, digits=3):
     mean, sem, n = value
     if not np.isfinite(mean):
@@ -349,6 +385,17 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
                   f"| {'—' if freq == 0 else _pm(ratio, 2)} | {_pm(_mean_sem([x['modes_below_drive'] for x in rows]), 3)} "
                   f"| {_pm(_mean_sem([x['band_top'] / 1e3 for x in rows]), 3)} "
                   f"| {_pm(_mean_sem([x.get('mu_ratio', np.nan) for x in rows]), 3)} |")
+    effects = us_effects(runs)
+    if effects:
+        print("\nThe effect of the drive (h30us): the driven run minus the undriven one of the same packing, mean ± "
+              "standard error over the packings:\n")
+        print("| N_U | I_M | f (kHz) | modes below f | ΔF/(PLd) | Δ⟨Δt_c⟩ (d/U) | ΔCV of F | Δskewness | ΔEq. 7 wall σ |")
+        print("|---|---|---|---|---|---|---|---|---|")
+        for (NU, freq), q in sorted(effects.items()):
+            print(f"| {NU:g} | {q['I_M']:.3g} | {freq / 1e3:g} | {_pm(q['modes_below_drive'], 3)} "
+                  f"| {_pm(q.get('Fnorm', (np.nan, np.nan, 0)), 2)} | {_pm(q.get('dtc_mean_dU', (np.nan, np.nan, 0)), 2)} "
+                  f"| {_pm(q.get('cv_wall', (np.nan, np.nan, 0)), 2)} | {_pm(q.get('skew_wall', (np.nan, np.nan, 0)), 2)} "
+                  f"| {_pm(q.get('eq7_wall_sigma', (np.nan, np.nan, 0)), 2)} |")
     if mu_fit is not None:
         (m1, m2, i0), (e1, e2, ei), n = mu_fit
         print(f"\nEq. 20 fit of the local μ(I) over the region of Fig. 19 of the runs with a stress field ({n} bins): "
@@ -368,6 +415,7 @@ def figures(runs, fit, figdir, fit30=None, eq5=None, mu_fit=None):
     if h30:
         _scan_figures(h30, fit30, figdir, "_H30", "H/d = 30, L/H = 5")
         _h30_figures(h30, figdir, eq5, mu_fit)
+    _us_figures(runs, figdir)
 
 
 def _one_per_im(runs):
@@ -417,6 +465,12 @@ def _scan_figures(scan, fit, figdir, suffix, title):
                          fits_wall={scan[n][0]["I_M"]: scan[n][0]["eq7_wall"] for n in one})
     figs.fig8_autocorrelation({scan[n][0]["I_M"]: (scan[n][1]["dt_rec"], scan[n][1]["C"], scan[n][1]["period"]) for n in one},
                               os.path.join(figdir, f"fig8_autocorrelation{suffix}.png"), title=title)
+
+
+def _us_figures(runs, figdir):
+    effects = us_effects(runs)
+    if effects:
+        figs.fig_us_effects(effects, os.path.join(figdir, "fig_us_effects_H30.png"))
 
 
 def _h30_figures(h30, figdir, eq5, mu_fit):
@@ -520,6 +574,7 @@ def collect(top):
         return None if f is None else [list(map(float, f[0])), list(map(float, f[1]))] + list(f[2:])
     with open(os.path.join(top, "summary.json"), "w") as f:
         json.dump({"runs": {n: r for n, (r, _) in runs.items()}, "eq4_fit": listed(fit), "eq4_fit_H30": listed(fit30),
+                   "us_effects_H30": {f"nu{NU:g}_f{freq / 1e3:g}": q for (NU, freq), q in us_effects(runs).items()},
                    "eq5_fit_H30": listed(eq5), "eq20_fit": listed(mu_fit),
                    "by_im_H30": {f"{im:g}": {k: (list(v) if isinstance(v, tuple) else v) for k, v in q.items()}
                                  for im, q in by_im(runs).items()}},

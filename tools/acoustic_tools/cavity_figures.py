@@ -23,6 +23,8 @@ or a user's own runs can call them:
   fig_memory              <Delta t_c> against I_M in d/U and in seconds,
                           each run by its N_U, the mean and standard error
                           per I_M
+  fig_us_effects          the drive's effect on F/(PLd), <Delta t_c>, CV
+                          against the fraction of the modes below the drive
   fig5_orientations       the principal directions of the strain rate and
                           of the stress over the cavity
   fig6_mu_map             (mu_loc - mu_th) / mu_th over the cavity
@@ -451,4 +453,30 @@ def fig_memory(rows, groups, path, title=""):
     axes[1].set_title("(b) in seconds")
     if title:
         fig.suptitle(title)
+    _save(fig, path)
+
+
+def fig_us_effects(effects, path, title="the drive's effect (driven minus undriven, same packing)"):
+    """The effect of the ultrasound against where the drive falls in the
+    network's spectrum (the fraction of the modes below it), one curve per
+    N_U: effects is cavity_collect.us_effects's {(NU, f): {quantity: (mean,
+    sem, n)}}; panels F/(PLd), <Delta t_c> (d/U), CV of F"""
+    fig, axes = plt.subplots(1, 3, figsize=(11.0, 3.6))
+    nus = sorted({NU for NU, _ in effects})
+    for k, NU in enumerate(nus):
+        keys = sorted(f for n, f in effects if n == NU)
+        for ax, q, label in zip(axes, ("Fnorm", "dtc_mean_dU", "cv_wall"),
+                                (r"$\Delta \bar F/(PLd)$", r"$\Delta\langle\Delta t_c\rangle$ (d/U)", r"$\Delta$ CV of $F$")):
+            x = [effects[(NU, f)]["modes_below_drive"][0] for f in keys]
+            x = [xi if np.isfinite(xi) else f / 1e5 for xi, f in zip(x, keys)]
+            y = [effects[(NU, f)].get(q, (np.nan, np.nan, 0))[0] for f in keys]
+            e = [effects[(NU, f)].get(q, (np.nan, np.nan, 0))[1] for f in keys]
+            im = effects[(NU, keys[0])]["I_M"]
+            ax.errorbar(x, y, yerr=np.nan_to_num(e), fmt="o-", color=f"C{k}", capsize=3, ms=4,
+                        label=f"$N_U$ = {NU:g}, $I_M$ = {im:.2g}")
+            ax.axhline(0.0, color="0.6", lw=0.6)
+            ax.set_xlabel("fraction of the modes below the drive")
+            ax.set_ylabel(label)
+    axes[0].legend(frameon=False, fontsize=7)
+    fig.suptitle(title)
     _save(fig, path)

@@ -217,3 +217,28 @@ def test_smooth_field():
     # next to the empty bin the kernel is lopsided: within a fraction of the field's step
     assert abs(out[5, 6] - field[5, 6]) < 1.0
     assert np.allclose(cavity.smooth_field(np.ones((5, 5)), 1.0), 1.0)
+
+
+def test_us_effects_are_paired_by_packing(tmp_path):
+    from acoustic_tools import cavity_collect, cavity_figures as cf
+
+    def row(NU, freq, seed, F, dtc, below=np.nan):
+        fit = {"mu": 0.0, "sigma": 0.5 + freq * 1e-6, "f0": 1.0, "p0": 0.0}
+        return ({"I_M": 0.0061 * NU, "NU": NU, "freq": freq, "seed": seed, "Fnorm": F, "dtc_mean_dU": dtc,
+                 "cv_wall": 0.5, "skew_wall": 0.2, "eq7_wall": fit, "modes_below_drive": below}, None)
+    runs = {}
+    for seed, shift in ((1, 0.00), (2, 0.05), (3, -0.03)):          # packings differ by more than the effect
+        runs[f"h30us/a{seed}"] = row(1, 0.0, seed, 0.55 + shift, 2.0 + shift)
+        runs[f"h30us/b{seed}"] = row(1, 70e3, seed, 0.53 + shift + 0.001 * seed, 1.5 + shift, below=0.98)
+    runs["h30us/c1"] = row(1, 35e3, 1, 0.56, 2.0, below=0.79)        # no undriven twin for seeds 2, 3
+    effects = cavity_collect.us_effects(runs)
+    q = effects[(1, 70e3)]
+    mean, sem, n = q["Fnorm"]
+    assert n == 3 and mean == pytest.approx(-0.02 + 0.002) and sem == pytest.approx(0.001 / math.sqrt(3))
+    assert q["dtc_mean_dU"][0] == pytest.approx(-0.5) and q["eq7_wall_sigma"][0] == pytest.approx(0.07)
+    assert q["modes_below_drive"][0] == pytest.approx(0.98)
+    assert effects[(1, 35e3)]["Fnorm"][2] == 1
+    text = cavity_collect.print_tables({}, None) + ""
+    assert "effect of the drive" not in text
+    cf.fig_us_effects(effects, tmp_path / "us.png")
+    assert (tmp_path / "us.png").read_bytes()[:4] == b"\x89PNG"
