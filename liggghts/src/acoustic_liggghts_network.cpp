@@ -40,7 +40,8 @@ using namespace LAMMPS_NS;
 
 namespace {
 const int GRAIN_WORDS = 4;      // tag, mass, radius, flag
-const int CONTACT_WORDS = 7;    // tag lo, tag hi (-1 - w for wall w), normal (3, from hi to lo), k_n, k_t
+// tag lo, tag hi (-1 - w for wall w), normal (3, from hi to lo), k_n, k_t
+const int CONTACT_WORDS = 7;
 const char *const FACTOR_NAME = "acousticFrictionReduction";
 }    // namespace
 
@@ -293,7 +294,7 @@ void AcousticLiggghtsNetwork::add_wall_contact(int i, int w, const double *delta
   c.kt = ratio_ * c.kn;
   c.mu = coeffFrict[itype][wall_type];
   const int offset = walls_[w].factor_offset;
-  c.slot = (history && offset >= 0) ? history + offset : NULL;
+  c.slot = (need_factor_ && history && offset >= 0) ? history + offset : NULL;
   c.counted = true;
   if (!(dist > 0.0) || !(std::isfinite(c.fn) && std::isfinite(c.kn))) {
     char message[512];
@@ -334,14 +335,14 @@ void AcousticLiggghtsNetwork::collect_primitive(int groupbit, int w)
   FixWallGran *fix = walls_[w].fix;
   PrimitiveWall *prim = fix->primitiveWall();
   double **history = NULL;
-  if (walls_[w].factor_offset >= 0) {
+  if (need_factor_ && walls_[w].factor_offset >= 0) {
     const std::string name = std::string("history_") + fix->id;
     const int ifix = modify->find_fix(name.c_str());
     FixPropertyAtom *hist = ifix >= 0 ? dynamic_cast<FixPropertyAtom *>(modify->fix[ifix]) : NULL;
     if (!hist || !hist->array_atom)
       error_all("fix %s (wall/gran) has no per-atom contact history (fix %s)", fix->id,
                 name.c_str());
-    if (need_factor_) settle_just_created(hist);
+    settle_just_created(hist);
     history = hist->array_atom;
   }
   double **x = atom->x;

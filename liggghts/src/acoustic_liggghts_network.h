@@ -16,13 +16,16 @@
    Use:
      AcousticLiggghtsNetwork net(lmp, "fix acoustic/mindlin us");
      net.set_stiffness(E, nu, kappa_scale, ratio);
-     net.init(true);                    // in the style's init(): checks, offsets
+     net.init(true, modify->find_fix(id));   // in the style's init(): checks,
+                                        // offsets, walls (a compute: init(false))
      net.collect(groupbit);             // this processor's contacts
      AcousticLiggghtsNetwork::Gathered g;
      net.gather(groupbit, flagbit, model, g);   // on rank 0: the facade's input
-     ... rank 0: add g.input.prescribed, set frequency, solve_gathered_drive ...
-     net.broadcast(g.tags, q, ndof);    // every rank: tags and DOF values
-     for each net.contacts()[k]: grain_index(g.tags, tag) -> its q, the factor
+     ... rank 0: add g.input.prescribed (the walls: node g.tags.size() + w),
+         set the frequency, solve_gathered_drive -> q ...
+     net.broadcast(g.tags, q);          // every rank: tags and DOF values
+     for each net.contacts()[k]: grain_index(g.tags, tag) (a wall:
+         g.tags.size() + wall) -> its q, the factor into *slot
 
    What a contact is (collect): a pair (i, j) of pair gran's neighbor list
    (newton off: a pair with a ghost j is listed on both processors), both
@@ -57,7 +60,8 @@
    and the wall's type), k_n at R* = r_i (a flat body of infinite radius,
    as the LAMMPS fix), mu coeffFrict of the two types, slot the 1 - s of
    the wall's contact history when its tangential model is history/acoustic
-   (else NULL: that wall keeps its friction, as in LAMMPS).
+   (else NULL: that wall keeps its friction, as in LAMMPS; NULL for every
+   contact, pair or wall, when init was told the factor is not needed).
    - primitive walls: the grains of the wall fix's group whose overlap
      with the wall, as PrimitiveWall::resolveContact gives it (the wall
      fix's own call), is > 0; history: the wall fix's per-atom history

@@ -274,24 +274,36 @@ void FixAcousticMindlin::pre_force(int)
 }
 
 /* ----------------------------------------------------------------------
-   gather, solve on rank 0, broadcast, set every contact's factor
+   the contacts, the drive's response (f > 0), every contact's factor
 ------------------------------------------------------------------------- */
 
 void FixAcousticMindlin::update_factors()
 {
   network->collect(groupbit);
-  const std::vector<AcousticLiggghtsNetwork::Contact> &contacts = network->contacts();
+  std::vector<double> tags_sorted;    // every grain of the group, by atom ID
+  std::vector<double> q;              // their DOF values, then the walls'
+  if (frequency > 0.0 && !solve_drive(tags_sorted, q)) {
+    statistics();    // the solve failed: the previous factors stay
+    return;
+  }
+  set_factors(tags_sorted, q);
+  statistics();
+}
+
+/* ----------------------------------------------------------------------
+   gather, solve on rank 0, broadcast; false (after a WARNING) if the solve
+   failed numerically, an ERROR if the input is invalid
+------------------------------------------------------------------------- */
+
+bool FixAcousticMindlin::solve_drive(std::vector<double> &tags_sorted, std::vector<double> &q)
+{
   const int dim = domain->dimension;
   const Acoustic::FacadeContactModel::Value model =
       model_full ? Acoustic::FacadeContactModel::Full : Acoustic::FacadeContactModel::Normal;
   const int ndof = Acoustic::facade_dofs_per_grain(dim, model);
-  int *tag = atom->tag;
   const int me = comm->me;
-
-  std::vector<double> tags_sorted;    // every grain of the group, by atom ID
-  std::vector<double> q;              // their DOF values, 2 ndof each
   int solved = 1;
-  if (frequency > 0.0) {
+  {
     AcousticLiggghtsNetwork::Gathered net;
     network->gather(groupbit, source_groupbit, model, net);
     std::string failure;
@@ -343,14 +355,26 @@ void FixAcousticMindlin::update_factors()
       MPI_Bcast(&text[0], length + 1, MPI_CHAR, 0, world);
       error_all("%s %s: cannot solve the drive: %s", CMD, id, &text[0]);
     }
-    if (!solved) {
-      statistics();
-      return;
-    }
+    if (!solved) return false;
     network->broadcast(tags_sorted, q);
   }
+  return true;
+}
 
-  // every copy of every contact, from its lower to its higher atom ID
+/* ----------------------------------------------------------------------
+   every copy of every contact, from its lower to its higher atom ID (a
+   wall second): U_t and s, 1 - s into its history, the local rows
+------------------------------------------------------------------------- */
+
+void FixAcousticMindlin::set_factors(const std::vector<double> &tags_sorted,
+                                     const std::vector<double> &q)
+{
+  const std::vector<AcousticLiggghtsNetwork::Contact> &contacts = network->contacts();
+  const int dim = domain->dimension;
+  const Acoustic::FacadeContactModel::Value model =
+      model_full ? Acoustic::FacadeContactModel::Full : Acoustic::FacadeContactModel::Normal;
+  const int ndof = Acoustic::facade_dofs_per_grain(dim, model);
+  int *tag = atom->tag;
   Acoustic::ContactFactorInput in;
   in.dimension = dim;
   in.model = model;
@@ -420,7 +444,6 @@ void FixAcousticMindlin::update_factors()
     error_all("%s %s: %d contact(s) got no friction factor (%s)", CMD, id, bad_all,
               bad ? (bad_message.empty() ? "a grain missing from the network" : bad_message.c_str())
                   : "see the other ranks");
-  statistics();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -453,5 +476,6 @@ double FixAcousticMindlin::compute_vector(int n)
 
 double FixAcousticMindlin::memory_usage()
 {
-  return network->contacts().capacity() * sizeof(AcousticLiggghtsNetwork::Contact) + maxrows * size_local_cols * sizeof(double);
+  return network->contacts().capacity() * sizeof(AcousticLiggghtsNetwork::Contact) +
+      maxrows * size_local_cols * sizeof(double);
 }

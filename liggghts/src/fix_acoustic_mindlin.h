@@ -82,6 +82,8 @@ class FixAcousticMindlin : public Fix {
   void parse(int narg, char **arg);
   void normalise_direction();
   void update_factors();
+  bool solve_drive(std::vector<double> &tags_sorted, std::vector<double> &q);
+  void set_factors(const std::vector<double> &tags_sorted, const std::vector<double> &q);
   void statistics();
 };
 

@@ -24,10 +24,11 @@ Sound in confined packings (paper 003, examples/sound)
   sound_study            examples/sound/study.py: run, collect, figures, migrate
 
 Granular lid-driven cavity (paper 004, examples/cavity)
-  cavity                 inertial number, vortex centre, correlation times, Eq. 7 fits
+  cavity                 inertial number, vortex centre, correlation times, Eq. 5 and 7 fits,
+                         zero forces, stationarity, the local mu(I)
   cavity_figures         the figures of paper 004
   cavity_collect         the runs of the study (job.json, result.json) into tables and figures
-  cavity_study           examples/cavity/study.py: run, collect, figures
+  cavity_study           examples/cavity/study.py: plan, run (as restartable pieces), collect, figures
 
 The modules with a command line run as `python3 -m acoustic_tools.MODULE`
 (avalanche, avalanche_figures, lammps_log, packing_checks).

@@ -159,19 +159,24 @@ def analyse(run, settings, p):
 
 
 def local_rheology(path, p, h):
-    """The local mu(I) of one run from its TAG.stress (blocks after nskip):
-    {"x", "y", "I", "mu" (grids), "region": (I, mu) of paper 004 Fig. 19's
-    region (the upper half of the packing, a band L/2 wide centred in x)}"""
+    """The local mu(I) of one run from its TAG.stress (blocks after nskip,
+    averaged: the fields of the time-averaged stress and velocity, smoothed
+    by paper 004's kernel, App. A): {"x", "y", "I", "mu" (grids), "region":
+    (I, mu) of paper 004 Fig. 19's region (the upper half of the packing, a
+    band L/2 wide centred in x), "stress", "rate"}"""
     blocks = lammps_output.read_ave_chunk(path)
     cols = cavity.mean_blocks(blocks, first_step=p["nskip"])
-    x, y, sxx, syy, sxy, vx, vy = cavity.stress_and_velocity_fields(cols, p["d"] * p["d"], p["d"])
+    x, y, *fields = cavity.stress_and_velocity_fields(cols, p["d"] * p["d"], p["d"])
+    # paper 004 App. A: a Gaussian kernel of standard deviation d/2 on the mesh of d
+    sxx, syy, sxy, vx, vy = (cavity.smooth_field(f, 0.5) for f in fields)
     Dxx, Dyy, Dxy = cavity.strain_rate_2d(x, y, vx, vy)
     rho_p = 2500.0
     I, mu = cavity.local_rheology(sxx, syy, sxy, Dxx, Dyy, Dxy, p["d"], rho_p)
     X, Y = np.meshgrid(x, y)
     L = p["L"]
     region = (X > 0.25 * L) & (X < 0.75 * L) & (Y > 0.5 * h) & (Y < h - p["d"])
-    return {"x": x, "y": y, "I": I, "mu": mu, "region": (I[region], mu[region]), "h": h, "L": L}
+    return {"x": x, "y": y, "I": I, "mu": mu, "region": (I[region], mu[region]), "h": h, "L": L,
+            "stress": (sxx, syy, sxy), "rate": (Dxx, Dyy, Dxy)}
 
 
 def read_runs(top):
@@ -228,6 +233,42 @@ def by_im(runs, prefixes=H30_SCAN, digits=2):
         q["runs"] = len(rows)
         out[im] = q
     return out
+
+
+US_QUANTITIES = ("Fnorm", "dtc_mean_dU", "cv_wall", "skew_wall")
+
+
+def us_effects(runs, prefix="h30us/", quantities=US_QUANTITIES):
+    """The effect of the drive in the ultrasound set: for each (N_U, f > 0),
+    the differences x(f, seed) - x(0, seed) of each quantity over the
+    packings (seeds) that ran both (the same deposit: paired), their mean
+    and standard error: {(NU, freq): {quantity: (mean, sem, n)}}; also the
+    wall-scale Eq. 7 sigma ("eq7_wall_sigma") and where the drive falls in
+    the spectrum ("modes_below_drive", mean over the driven runs)"""
+    table = {}
+    for name, (r, _) in runs.items():
+        if name.startswith(prefix):
+            table[(r["NU"], r["freq"], r.get("seed", 1))] = r
+    out = {}
+    for (NU, freq, seed), r in sorted(table.items()):
+        if freq == 0:
+            continue
+        base = table.get((NU, 0.0, seed)) or table.get((NU, 0, seed))
+        entry = out.setdefault((NU, freq), {"_diffs": {}, "_below": []})
+        entry["_below"].append(r.get("modes_below_drive", np.nan))
+        if base is None:
+            continue
+        for q in quantities + ("eq7_wall_sigma",):
+            a = r["eq7_wall"]["sigma"] if q == "eq7_wall_sigma" else r.get(q, np.nan)
+            b = base["eq7_wall"]["sigma"] if q == "eq7_wall_sigma" else base.get(q, np.nan)
+            entry["_diffs"].setdefault(q, []).append(a - b)
+    result = {}
+    for key, entry in out.items():
+        row = {q: _mean_sem(v) for q, v in entry["_diffs"].items()}
+        row["modes_below_drive"] = _mean_sem(entry["_below"])
+        row["I_M"] = next(r["I_M"] for (NU, f, _), r in table.items() if (NU, f) == key)
+        result[key] = row
+    return result
 
 
 def _pm(value, digits=3):
@@ -344,6 +385,17 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
                   f"| {'—' if freq == 0 else _pm(ratio, 2)} | {_pm(_mean_sem([x['modes_below_drive'] for x in rows]), 3)} "
                   f"| {_pm(_mean_sem([x['band_top'] / 1e3 for x in rows]), 3)} "
                   f"| {_pm(_mean_sem([x.get('mu_ratio', np.nan) for x in rows]), 3)} |")
+    effects = us_effects(runs)
+    if effects:
+        print("\nThe effect of the drive (h30us): the driven run minus the undriven one of the same packing, mean ± "
+              "standard error over the packings:\n")
+        print("| N_U | I_M | f (kHz) | modes below f | ΔF/(PLd) | Δ⟨Δt_c⟩ (d/U) | ΔCV of F | Δskewness | ΔEq. 7 wall σ |")
+        print("|---|---|---|---|---|---|---|---|---|")
+        for (NU, freq), q in sorted(effects.items()):
+            print(f"| {NU:g} | {q['I_M']:.3g} | {freq / 1e3:g} | {_pm(q['modes_below_drive'], 3)} "
+                  f"| {_pm(q.get('Fnorm', (np.nan, np.nan, 0)), 2)} | {_pm(q.get('dtc_mean_dU', (np.nan, np.nan, 0)), 2)} "
+                  f"| {_pm(q.get('cv_wall', (np.nan, np.nan, 0)), 2)} | {_pm(q.get('skew_wall', (np.nan, np.nan, 0)), 2)} "
+                  f"| {_pm(q.get('eq7_wall_sigma', (np.nan, np.nan, 0)), 2)} |")
     if mu_fit is not None:
         (m1, m2, i0), (e1, e2, ei), n = mu_fit
         print(f"\nEq. 20 fit of the local μ(I) over the region of Fig. 19 of the runs with a stress field ({n} bins): "
@@ -353,8 +405,8 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
 
 def figures(runs, fit, figdir, fit30=None, eq5=None, mu_fit=None):
     """Paper 004's figures into figdir: those of the H/d = 10 scan (Figs. 2,
-    3, 9, 10, 12, 13, 14, Phi*) and, when there are runs of the H/d = 30
-    scan, the same with the suffix _H30 and Figs. 4, 6, 8, 11, 19, 20"""
+    3, 8, 9, 10, 12, 13, 14, 20, Phi*) and, when there are runs of the
+    H/d = 30 scan, the same with the suffix _H30 and Figs. 4, 5, 6, 11, 19"""
     os.makedirs(figdir, exist_ok=True)
     scan = {n: v for n, v in runs.items() if n.startswith("scan/")}
     if scan:
@@ -363,6 +415,7 @@ def figures(runs, fit, figdir, fit30=None, eq5=None, mu_fit=None):
     if h30:
         _scan_figures(h30, fit30, figdir, "_H30", "H/d = 30, L/H = 5")
         _h30_figures(h30, figdir, eq5, mu_fit)
+    _us_figures(runs, figdir)
 
 
 def _one_per_im(runs):
@@ -414,8 +467,16 @@ def _scan_figures(scan, fit, figdir, suffix, title):
                               os.path.join(figdir, f"fig8_autocorrelation{suffix}.png"), title=title)
 
 
+def _us_figures(runs, figdir):
+    effects = us_effects(runs)
+    if effects:
+        figs.fig_us_effects(effects, os.path.join(figdir, "fig_us_effects_H30.png"))
+
+
 def _h30_figures(h30, figdir, eq5, mu_fit):
     rows = [r for r, _ in h30.values()]
+    figs.fig_memory(rows, by_im(h30), os.path.join(figdir, "fig_memory_H30.png"),
+                    title="force memory on the wall portions, H/d = 30")
     figs.fig4_force_vortex([r.get("ell_over_L", np.nan) for r in rows], [r["Fnorm"] for r in rows],
                            [r["I_M"] for r in rows], os.path.join(figdir, "fig4_force_vortex_H30.png"),
                            fit=None if eq5 is None else eq5[0], title="H/d = 30")
@@ -435,6 +496,10 @@ def _h30_figures(h30, figdir, eq5, mu_fit):
             rh = d["rheology"]
             figs.fig6_mu_map(rh["x"], rh["y"], rh["I"], rh["mu"], os.path.join(figdir, f"fig6{label}_mu_map_H30.png"),
                              rh["L"], rh["h"], title=f"({label}) $I_M$ = {r['I_M']:.2g}, $N_U$ = {r['NU']:g}, $N_P$ = {r['NP']:.3g}")
+            if label == "b":
+                figs.fig5_orientations(rh["x"], rh["y"], *rh["stress"], *rh["rate"],
+                                       os.path.join(figdir, "fig5_orientations_H30.png"), rh["L"], rh["h"],
+                                       title=f"$I_M$ = {r['I_M']:.2g}, $N_U$ = {r['NU']:g}, $N_P$ = {r['NP']:.3g}")
 
 
 def scan_fit(runs, prefixes=("scan/",)):
@@ -509,6 +574,7 @@ def collect(top):
         return None if f is None else [list(map(float, f[0])), list(map(float, f[1]))] + list(f[2:])
     with open(os.path.join(top, "summary.json"), "w") as f:
         json.dump({"runs": {n: r for n, (r, _) in runs.items()}, "eq4_fit": listed(fit), "eq4_fit_H30": listed(fit30),
+                   "us_effects_H30": {f"nu{NU:g}_f{freq / 1e3:g}": q for (NU, freq), q in us_effects(runs).items()},
                    "eq5_fit_H30": listed(eq5), "eq20_fit": listed(mu_fit),
                    "by_im_H30": {f"{im:g}": {k: (list(v) if isinstance(v, tuple) else v) for k, v in q.items()}
                                  for im, q in by_im(runs).items()}},

@@ -20,6 +20,13 @@ or a user's own runs can call them:
                           several I_M, the inset against (U/d) Delta t
   fig11_particle_pairs    particle-scale PDFs of several (N_U, N_P) at one I_M
   fig20_loglinear         the PDFs of Figs. 12 and 13 on a log-linear scale
+  fig_memory              <Delta t_c> against I_M in d/U and in seconds,
+                          each run by its N_U, the mean and standard error
+                          per I_M
+  fig_us_effects          the drive's effect on F/(PLd), <Delta t_c>, CV
+                          against the fraction of the modes below the drive
+  fig5_orientations       the principal directions of the strain rate and
+                          of the stress over the cavity
   fig6_mu_map             (mu_loc - mu_th) / mu_th over the cavity
   fig19_mu_I              mu_loc against I in the region of Fig. 19, Eq. 20
 
@@ -389,4 +396,87 @@ def fig19_mu_I(points, path, fit=None, title="the region of Fig. 19"):
     ax.set_ylabel(r"$\mu_{loc}$ (Eq. 19)")
     ax.set_title(title)
     ax.legend(frameon=False, fontsize=6)
+    _save(fig, path)
+
+
+def fig5_orientations(x, y, sxx, syy, sxy, Dxx, Dyy, Dxy, path, L, h, every=3, title=""):
+    """Fig. 5: the principal directions (segments, every `every` bins) of
+    (a) the strain rate (major extension) and (b) the stress (major
+    compression, stress counted positive in compression) over the cavity"""
+    X, Y = np.meshgrid(x, y)
+    keep = (Y > 0) & (Y < h)
+    sub = (slice(None, None, every), slice(None, None, every))
+    fig, axes = plt.subplots(2, 1, figsize=(9.0, 2 * (9.0 * h / L + 0.8)))
+    for ax, (a, b, c), label in ((axes[0], (Dxx, Dyy, Dxy), "(a) strain rate, major extension"),
+                                 (axes[1], (sxx, syy, sxy), "(b) stress, major compression")):
+        theta = cavity.principal_direction(a, b, c)
+        good = keep & np.isfinite(theta)
+        u, v = np.where(good, np.cos(theta), np.nan), np.where(good, np.sin(theta), np.nan)
+        ax.quiver(X[sub], Y[sub], u[sub], v[sub], pivot="middle", headwidth=0, headlength=0, headaxislength=0,
+                  scale=60, width=0.002)
+        ax.set_xlim(0.0, L)
+        ax.set_ylim(0.0, h)
+        ax.set_aspect("equal")
+        ax.set_title(label, fontsize=9)
+    axes[1].set_xlabel("x (m)")
+    if title:
+        fig.suptitle(title)
+    _save(fig, path)
+
+
+def fig_memory(rows, groups, path, title=""):
+    """<Delta t_c> (mean over the portions) against I_M: (a) in units of
+    d/U, (b) in ms; rows: one dict per run (I_M, NU, dtc_mean_dU,
+    dtc_mean_s), marked by N_U; groups: I_M -> {"dtc_mean_dU": (mean, sem,
+    n), "dtc_mean_s": ...} (cavity_collect.by_im), drawn with error bars"""
+    fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.8))
+    markers = {}
+    for r in rows:
+        k = markers.setdefault(r["NU"], len(markers))
+        for ax, key, scale in ((axes[0], "dtc_mean_dU", 1.0), (axes[1], "dtc_mean_s", 1e3)):
+            ax.plot(r["I_M"], scale * r[key], "osd^v"[k % 5], color=f"C{k}", ms=4, alpha=0.7,
+                    label=f"$N_U$ = {r['NU']:g}" if ax is axes[0] else None)
+    ims = sorted(groups)
+    for ax, key, scale in ((axes[0], "dtc_mean_dU", 1.0), (axes[1], "dtc_mean_s", 1e3)):
+        mean = np.array([groups[im][key][0] for im in ims]) * scale
+        sem = np.array([groups[im][key][1] for im in ims]) * scale
+        ax.errorbar(ims, mean, yerr=np.nan_to_num(sem), fmt="k_", ms=14, capsize=3, lw=1, label="mean ± s.e.")
+        ax.set_xscale("log")
+        ax.set_xlabel(r"$I_M$")
+    handles, labels = axes[0].get_legend_handles_labels()
+    unique = dict(zip(labels, handles))
+    axes[0].legend(unique.values(), unique.keys(), frameon=False, fontsize=7)
+    axes[0].set_ylabel(r"$\langle \Delta t_c \rangle$ (d/U)")
+    axes[1].set_ylabel(r"$\langle \Delta t_c \rangle$ (ms)")
+    axes[1].set_yscale("log")
+    axes[0].set_title("(a) in units of d/U")
+    axes[1].set_title("(b) in seconds")
+    if title:
+        fig.suptitle(title)
+    _save(fig, path)
+
+
+def fig_us_effects(effects, path, title="the drive's effect (driven minus undriven, same packing)"):
+    """The effect of the ultrasound against where the drive falls in the
+    network's spectrum (the fraction of the modes below it), one curve per
+    N_U: effects is cavity_collect.us_effects's {(NU, f): {quantity: (mean,
+    sem, n)}}; panels F/(PLd), <Delta t_c> (d/U), CV of F"""
+    fig, axes = plt.subplots(1, 3, figsize=(11.0, 3.6))
+    nus = sorted({NU for NU, _ in effects})
+    for k, NU in enumerate(nus):
+        keys = sorted(f for n, f in effects if n == NU)
+        for ax, q, label in zip(axes, ("Fnorm", "dtc_mean_dU", "cv_wall"),
+                                (r"$\Delta \bar F/(PLd)$", r"$\Delta\langle\Delta t_c\rangle$ (d/U)", r"$\Delta$ CV of $F$")):
+            x = [effects[(NU, f)]["modes_below_drive"][0] for f in keys]
+            x = [xi if np.isfinite(xi) else f / 1e5 for xi, f in zip(x, keys)]
+            y = [effects[(NU, f)].get(q, (np.nan, np.nan, 0))[0] for f in keys]
+            e = [effects[(NU, f)].get(q, (np.nan, np.nan, 0))[1] for f in keys]
+            im = effects[(NU, keys[0])]["I_M"]
+            ax.errorbar(x, y, yerr=np.nan_to_num(e), fmt="o-", color=f"C{k}", capsize=3, ms=4,
+                        label=f"$N_U$ = {NU:g}, $I_M$ = {im:.2g}")
+            ax.axhline(0.0, color="0.6", lw=0.6)
+            ax.set_xlabel("fraction of the modes below the drive")
+            ax.set_ylabel(label)
+    axes[0].legend(frameon=False, fontsize=7)
+    fig.suptitle(title)
     _save(fig, path)

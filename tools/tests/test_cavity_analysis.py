@@ -130,8 +130,12 @@ def test_new_figures_are_written(tmp_path):
     from acoustic_tools import cavity_figures as cf
 
     rng = np.random.default_rng(2)
-    paths = {name: tmp_path / f"{name}.png" for name in ("f4", "f6", "f8", "f11", "f14", "f19", "f20")}
+    paths = {name: tmp_path / f"{name}.png" for name in ("f4", "f5", "f6", "f8", "f11", "f14", "f19", "f20", "mem")}
     ell = np.array([0.2, 0.3, 0.4, 0.5])
+    rows = [{"I_M": im, "NU": NU, "dtc_mean_dU": 2.0 / (1 + im / 0.01), "dtc_mean_s": 2e-3 / NU / (1 + im / 0.01)}
+            for im in (1e-3, 1e-2, 0.1) for NU in (1, 10)]
+    groups = {im: {"dtc_mean_dU": (1.0, 0.1, 2), "dtc_mean_s": (1e-3, np.nan, 1)} for im in (1e-3, 1e-2, 0.1)}
+    cf.fig_memory(rows, groups, paths["mem"])
     cf.fig4_force_vortex(ell, 0.88 - 0.5 * ell, [0.3, 0.1, 0.03, 0.01], paths["f4"], fit=(0.88, 0.5))
     C = 0.9 ** np.arange(200)
     cf.fig8_autocorrelation({1e-2: (1e-4, C, 1e-2), 0.3: (1e-4, C ** 3, 1e-3)}, paths["f8"])
@@ -145,6 +149,7 @@ def test_new_figures_are_written(tmp_path):
     X, Y = np.meshgrid(x, y)
     I = 1e-3 + 0 * X
     cf.fig6_mu_map(x, y, I, cavity.mu_I_model(I, *cavity.PAPER_MU_I) * (1 + 0.3 * np.sin(X * 40)), paths["f6"], 0.15, 0.03)
+    cf.fig5_orientations(x, y, 0 * X + 2, 0 * X + 1, 0.5 + 0 * X, 0 * X, 0 * X, 1 + 0 * X, paths["f5"], 0.15, 0.03)
     Ip = np.logspace(-4, -1, 100)
     cf.fig19_mu_I({1e-3: (Ip, cavity.mu_I_model(Ip, 0.12, 0.4, 0.13))}, paths["f19"], fit=(0.12, 0.4, 0.13))
     wall = {0.3: np.where(rng.random(3000) < 0.1, 0.0, rng.exponential(1.0, 3000)), 1e-3: rng.normal(1, 0.3, 3000)}
@@ -188,3 +193,52 @@ def test_spectrum_position(tmp_path):
                     "100 2\n1 1000 1e-4\n2 3000 4e-4\n")
     x, dens = cavity.read_modes_histogram(str(path))
     assert np.allclose(x, [1000, 3000]) and np.allclose(dens, [1e-4, 4e-4])
+
+
+def test_principal_direction():
+    # simple shear vx = gamma y: extension along 45 degrees; a stress larger along y: its major axis at 90 degrees
+    assert cavity.principal_direction(0.0, 0.0, 1.0) == pytest.approx(math.pi / 4)
+    assert abs(cavity.principal_direction(1.0, 2.0, 0.0)) == pytest.approx(math.pi / 2)
+    assert cavity.principal_direction(3.0, 1.0, 0.0) == pytest.approx(0.0)
+    # the resisting stress of that shear (sxy = -tau, compression positive): major compression at -45 degrees
+    assert cavity.principal_direction(1.0, 1.0, -0.3) == pytest.approx(-math.pi / 4)
+
+
+def test_smooth_field():
+    # a linear field is kept by a normalised kernel away from the edges; NaN bins stay NaN
+    # and do not leak into their neighbours
+    y, x = np.mgrid[0:20, 0:30].astype(float)
+    field = 2.0 * x + y
+    field[5, 5] = np.nan
+    out = cavity.smooth_field(field, 0.5)
+    assert np.isnan(out[5, 5]) and np.isfinite(out[5, 6])
+    far = (np.hypot(x - 5, y - 5) > 3) & (x > 2) & (x < 27) & (y > 2) & (y < 17)
+    assert np.allclose(out[far], field[far], atol=0.01)
+    # next to the empty bin the kernel is lopsided: within a fraction of the field's step
+    assert abs(out[5, 6] - field[5, 6]) < 1.0
+    assert np.allclose(cavity.smooth_field(np.ones((5, 5)), 1.0), 1.0)
+
+
+def test_us_effects_are_paired_by_packing(tmp_path):
+    from acoustic_tools import cavity_collect, cavity_figures as cf
+
+    def row(NU, freq, seed, F, dtc, below=np.nan):
+        fit = {"mu": 0.0, "sigma": 0.5 + freq * 1e-6, "f0": 1.0, "p0": 0.0}
+        return ({"I_M": 0.0061 * NU, "NU": NU, "freq": freq, "seed": seed, "Fnorm": F, "dtc_mean_dU": dtc,
+                 "cv_wall": 0.5, "skew_wall": 0.2, "eq7_wall": fit, "modes_below_drive": below}, None)
+    runs = {}
+    for seed, shift in ((1, 0.00), (2, 0.05), (3, -0.03)):          # packings differ by more than the effect
+        runs[f"h30us/a{seed}"] = row(1, 0.0, seed, 0.55 + shift, 2.0 + shift)
+        runs[f"h30us/b{seed}"] = row(1, 70e3, seed, 0.53 + shift + 0.001 * seed, 1.5 + shift, below=0.98)
+    runs["h30us/c1"] = row(1, 35e3, 1, 0.56, 2.0, below=0.79)        # no undriven twin for seeds 2, 3
+    effects = cavity_collect.us_effects(runs)
+    q = effects[(1, 70e3)]
+    mean, sem, n = q["Fnorm"]
+    assert n == 3 and mean == pytest.approx(-0.02 + 0.002) and sem == pytest.approx(0.001 / math.sqrt(3))
+    assert q["dtc_mean_dU"][0] == pytest.approx(-0.5) and q["eq7_wall_sigma"][0] == pytest.approx(0.07)
+    assert q["modes_below_drive"][0] == pytest.approx(0.98)
+    assert effects[(1, 35e3)]["Fnorm"][2] == 1
+    text = cavity_collect.print_tables({}, None) + ""
+    assert "effect of the drive" not in text
+    cf.fig_us_effects(effects, tmp_path / "us.png")
+    assert (tmp_path / "us.png").read_bytes()[:4] == b"\x89PNG"

@@ -189,6 +189,30 @@ def test_no_piece_after_the_deadline(tmp_path):
     assert "paused at the start" in printed and not (tmp_path / "late" / "log.lammps").exists()
 
 
+def test_study_run_in_pieces_and_collect(tmp_path, monkeypatch):
+    """study.py run of a set, in pieces (--piece-hours: one chunk each, two
+    pieces per call with --max-pieces), repeated until done; then collect
+    and figures read it"""
+    tiny = {"c1": dict(Hd=4, LH=5, NP=4, NU=10, strain=3, tskip=1, freq=0, seed=2, walls="coulomb", stress=1,
+                       tchunk=1, uslid=0)}
+    monkeypatch.setitem(cavity_study.SETS, "tiny", tiny)
+    out = tmp_path / "out"
+    argv = ["run", "tiny", "--out", str(out), "--lmp", LMP, "--piece-hours", "1e-7", "--max-pieces", "2"]
+    cavity_study.main(HERE, argv)
+    run = out / "tiny" / "c1"
+    assert study.read_result(str(run)) is None and cavity_study.read_resume(str(run), "cavity") is not None
+    cavity_study.main(HERE, argv)
+    p = study.read_result(str(run))
+    assert p is not None and p["walls"] == "coulomb" and p["stress"] == 1
+    assert study.read_job(str(run))["seed"] == 2 and "-var seed 2" in " ".join(
+        cavity_study.command(LMP, HERE, str(run), study.read_job(str(run))))
+    cavity_study.main(HERE, ["collect", "--out", str(out)])
+    row = json.loads((out / "summary.json").read_text())["runs"]["tiny/c1"]
+    assert row["walls"] == "coulomb" and row["seed"] == 2 and "stationarity" in row and "zeros" in row
+    assert row["mu_I_points"] > 0
+    cavity_study.main(HERE, ["figures", "--out", str(out), "--figures", str(tmp_path / "figs")])
+
+
 def test_ultrasound_from_the_bottom(tmp_path):
     log = run_deck(tmp_path, dict(SMALL, strain=2, freq=70e3, tag="u"))
     assert study.read_result(str(tmp_path)) is None and (tmp_path / "u.result.json").exists()
