@@ -251,6 +251,29 @@ def vertical_normals(grains, contacts_i, contacts_j, width, depth=None):
     return ny
 
 
+COULOMB_LIMIT = 0.999   # |F_t| / (mu F_n) at or above it: a contact at the Coulomb limit
+
+
+def mobilisation(normal_force, tangential_force, mu, limit=COULOMB_LIMIT):
+    """How far the contacts are from sliding: the mobilisation m = |F_t| /
+    (mu F_n) of every contact that carries a normal force; the fraction at
+    the Coulomb limit (m >= limit: LAMMPS's Mindlin model scales F_t back
+    onto mu F_n, so a sliding contact has m = 1 to rounding), the fraction
+    with m >= 0.9, the mean of m, and at_limit, the mask of the contacts at
+    the limit in the order given"""
+    normal_force = np.asarray(normal_force, dtype=float)
+    tangential_force = np.asarray(tangential_force, dtype=float)
+    if mu <= 0.0:
+        raise ValueError("mobilisation needs a friction coefficient mu > 0")
+    loaded = normal_force > 0.0
+    m = np.zeros(len(normal_force))
+    m[loaded] = tangential_force[loaded] / (mu * normal_force[loaded])
+    at_limit = loaded & (m >= limit)
+    count = max(int(loaded.sum()), 1)
+    return {"fraction_at_limit": float(at_limit.sum() / count), "fraction_above_0.9": float((m[loaded] >= 0.9).sum() / count),
+            "mean": float(m[loaded].mean()) if loaded.any() else 0.0, "at_limit": at_limit}
+
+
 def linear_response(moduli, tolerance=0.25, keys=("C11", "C22", "C33")):
     """True when the moduli measured over the first half of each imposed
     strain (C.._half) agree with those of the whole strain within

@@ -67,6 +67,7 @@ APPENDIX_B = {f"{modulus}_{kind}{n}_ratio": (kind, n, direction, modulus)
 DEFAULT_PISTON = (1, 0.001)    # in.packing's piston_mass and piston_speed
 DEFAULT_MU = 0.5               # in.packing's friction coefficient (job.json without mu: 0.5)
 FRICTIONLESS = 0.0             # mu of the frictionless packings (paper 003 Fig. 4(c))
+DEFAULT_MODULI_STRAIN = 0.05   # in.moduli's strain, a fraction of the overlap (job.json without it: 0.05)
 
 # the values of a sample's result.json, in the order of results.json: what
 # in.measure measured (with the deck's settings W, D, p_target, seed and
@@ -88,6 +89,12 @@ def mu_of(settings):
     return float(settings.get("mu", DEFAULT_MU))
 
 
+def moduli_strain_of(settings):
+    """the strain of the moduli of a sample's job.json, a fraction of the
+    overlap (DEFAULT_MODULI_STRAIN when it does not say)"""
+    return float(settings.get("moduli_strain", DEFAULT_MODULI_STRAIN))
+
+
 def network_model(mu):
     """the contact network of a packing of friction coefficient mu, as
     in.measure linearises it: "normal" (frictionless) for mu = 0, else "full"."""
@@ -99,16 +106,16 @@ def sample_key(settings):
     return (float(settings["p"]), int(settings["H"]), int(settings["seed"]))
 
 
-def samples(out, piston=DEFAULT_PISTON, mu=DEFAULT_MU):
+def samples(out, piston=DEFAULT_PISTON, mu=DEFAULT_MU, moduli_strain=DEFAULT_MODULI_STRAIN):
     """(p, H, seed) -> (directory, result) of every finished sample made
-    with the given piston (mass, speed) and friction coefficient mu: the
-    default ones (the paper's mu = 0.5) unless told; in the order of the
-    directories' names"""
+    with the given piston (mass, speed), friction coefficient mu and strain
+    of the moduli: the default ones (the paper's mu = 0.5) unless told; in
+    the order of the directories' names"""
     found = {}
     for directory, settings, result in study.finished_jobs(out):
         if settings.get("kind") != "sample" or piston_of(settings) != tuple(piston):
             continue
-        if mu_of(settings) != float(mu):
+        if mu_of(settings) != float(mu) or moduli_strain_of(settings) != float(moduli_strain):
             continue
         found[sample_key(settings)] = (directory, result)
     return found
@@ -160,14 +167,16 @@ def _number(value):
     return math.nan if value is None else float(value)
 
 
-def sample_results(path, result, model="full"):
+def sample_results(path, result, model="full", mu=DEFAULT_MU):
     """Everything about one sample: its result.json (result) as in.sound
     wrote it (SUMMARY_KEYS, MODULI_KEYS), the coherent peak of both pulses,
     the statics of Table I, whether the packing came to rest, the stress
     ratio of its acceptance checks, the overshoot of its compression and (2D)
-    the moduli of its contact network (path: the job's directory; model:
-    the network, "full", or "normal" for a frictionless packing, which
-    has no Appendix B: its C33 is zero)"""
+    the moduli of its contact network, and (when in.packing dumped the
+    tangential forces, tangential.dump) the contacts at the Coulomb limit
+    (contact_mobilisation; path: the job's directory; model: the network,
+    "full", or "normal" for a frictionless packing, which has no Appendix B:
+    its C33 is zero; mu: its friction coefficient)"""
     summary = {key: _number(result[key]) for key in SUMMARY_KEYS if key in result}
     out = dict(summary)
     out.update({key: _number(result[key]) for key in MODULI_KEYS if key in result})
@@ -193,6 +202,30 @@ def sample_results(path, result, model="full"):
         out.update({f"{key}_network": value for key, value in network.items()})
         if model == "full":
             out.update(appendix_b(grains, contacts, summary["W"], summary["h"], network))
+    tangential = os.path.join(path, "tangential.dump")
+    if model == "full" and os.path.exists(tangential):
+        out.update(contact_mobilisation(lammps_output.read_dump(tangential)[-1], grains, contacts, summary, mu))
+    return out
+
+
+def contact_mobilisation(tangential, grains, contacts, summary, mu=DEFAULT_MU):
+    """The grain-grain contacts at the Coulomb limit of one 2D packing
+    (tangential: in.packing's tangential.dump, columns i, j, F_n, |F_t|):
+    the fractions of sound.mobilisation, and the moduli of the contact
+    network with the tangential springs of those contacts removed, as if
+    every one of them slid (C22_slipping, C33_slipping: a bound on what
+    sliding at those contacts can do to the moduli; the wall contacts keep
+    their springs)"""
+    found = sound.mobilisation(tangential[2], tangential[3], float(mu))
+    sliding = {tuple(sorted((int(i), int(j)))) for i, j, limit in zip(tangential[0], tangential[1], found["at_limit"])
+               if limit}
+    out = {"mobilised": found["fraction_at_limit"], "mobilised_0.9": found["fraction_above_0.9"],
+           "mobilisation_mean": found["mean"]}
+    if not summary.get("D"):
+        eta = np.array([0.0 if tuple(sorted((int(i), int(j)))) in sliding else 1.0
+                        for i, j in zip(contacts[0], contacts[1])])
+        slipping = network_moduli.network_moduli(grains, contacts, summary["W"], summary["h"], eta=eta)
+        out.update({f"{key}_slipping": value for key, value in slipping.items()})
     return out
 
 
@@ -446,7 +479,7 @@ def usable_samples(out, mu=DEFAULT_MU):
     jobs = samples(out, mu=mu)
     found = {key: directory for key, (directory, _) in jobs.items()}
     model = network_model(mu)
-    per_sample = {key: sample_results(directory, result, model) for key, (directory, result) in jobs.items()}
+    per_sample = {key: sample_results(directory, result, model, mu) for key, (directory, result) in jobs.items()}
     off_target = sorted(os.path.basename(found[key]) for key, r in per_sample.items()
                         if abs(r["p"] / key[0] - 1.0) > 0.05)
     not_at_rest = sorted(os.path.basename(found[key]) for key, r in per_sample.items() if not r["at_rest"])
@@ -574,6 +607,98 @@ def c33_candidates(per_sample, pressures, height=25):
     return out
 
 
+def moduli_strains(out):
+    """the strains of the moduli other than the default among the finished
+    samples of out (study.py run --moduli-strain), in order"""
+    return sorted({moduli_strain_of(settings) for _, settings, _ in study.finished_jobs(out)
+                   if settings.get("kind") == "sample" and moduli_strain_of(settings) != DEFAULT_MODULI_STRAIN})
+
+
+def c33_and_sliding(out, per_sample, pressures, height=25):
+    """C33 against sliding at the contacts, per pressure, on the H = 25
+    packings: the contacts at the Coulomb limit and the network's C33 with
+    their tangential springs removed (contact_mobilisation, on every packing
+    with a tangential.dump), and the DEM's C33 measured at other strains on
+    the same packings (the samples of study.py run --moduli-strain, paired
+    seed by seed with the default ones: C33 at that strain over C33 at the
+    default strain, mean and standard error); {p: {"packings",
+    "mobilised", "mobilised_0.9", "mobilisation_mean", "C33_network",
+    "C33_slipping", "C22_slipping_over_network", "paper",
+    "strains": {strain: {"pairs", "ratio", "C33"}}}} (means and standard
+    errors), the pressures without either left out"""
+    strained = {e: samples(out, moduli_strain=e) for e in moduli_strains(out)}
+    out_entry = {}
+    for p in pressures:
+        sliding = {s: r for (q, h, s), r in per_sample.items() if q == p and h == height and "mobilised" in r}
+        for found in strained.values():
+            for (q, h, s), (directory, result) in found.items():
+                if q == p and h == height and s not in sliding and os.path.exists(
+                        os.path.join(directory, "tangential.dump")):
+                    grains = lammps_output.read_dump(os.path.join(directory, "grains.dump"))[-1]
+                    contacts = lammps_output.read_dump(os.path.join(directory, "contacts.dump"))[-1]
+                    summary = {key: _number(result[key]) for key in ("W", "h", "D") if key in result}
+                    entry = contact_mobilisation(lammps_output.read_dump(os.path.join(directory, "tangential.dump"))[-1],
+                                                 grains, contacts, summary)
+                    network = network_moduli.network_moduli(grains, contacts, summary["W"], summary["h"])
+                    entry.update({f"{key}_network": value for key, value in network.items()})
+                    sliding[s] = entry
+        entry = {"packings": len(sliding), "paper": PAPER_C33.get(p), "strains": {}}
+        if sliding:
+            rows = list(sliding.values())
+            for key in ("mobilised", "mobilised_0.9", "mobilisation_mean", "C33_network", "C33_slipping"):
+                entry[key] = mean_standard_error([r[key] for r in rows])
+            entry["C22_slipping_over_network"] = mean_standard_error([r["C22_slipping"] / r["C22_network"]
+                                                                      for r in rows])
+        for e, found in strained.items():
+            pairs = [(per_sample[(q, h, s)]["C33"], result["C33"]) for (q, h, s), (_, result) in found.items()
+                     if q == p and h == height and (q, h, s) in per_sample]
+            if pairs:
+                entry["strains"][e] = {"pairs": len(pairs),
+                                       "ratio": mean_standard_error([b / a for a, b in pairs]),
+                                       "C33": mean_standard_error([b for _, b in pairs])}
+        if sliding or entry["strains"]:
+            out_entry[p] = entry
+    return out_entry
+
+
+def _se_cell(value, fmt="{:.3g}"):
+    """mean ± standard error of a (mean, se) pair"""
+    return f"{fmt.format(value[0])} ± {value[1]:.1g}"
+
+
+def c33_sliding_table(sliding):
+    """The Markdown lines of c33_and_sliding (pressure keys as text)"""
+    strains = sorted({float(e) for c in sliding.values() for e in c["strains"]})
+    lines = _table_head(["C33 and sliding at the contacts (H = 25 packings; mean ± standard error): the grain-grain contacts",
+                         "at the Coulomb limit |F_t| = mu F_n (and above 0.9 mu F_n), the network's C33 with and without",
+                         "their tangential springs, over Table II's; the DEM's C33 measured at other strains on the same",
+                         f"packings over C33 at the default strain ({DEFAULT_MODULI_STRAIN:g} of the overlap (3 p)^(2/3), "
+                         "over h), and over Table II's"],
+                        ["p", "packings", "at the limit", "above 0.9", "mean |F_t|/(mu F_n)", "C33 network / paper",
+                         "C33 limit contacts slipping / paper", "C22 slipping / network"]
+                        + [f"C33(strain {e:g}) / C33 (pairs)" for e in strains]
+                        + [f"C33(strain {e:g}) / paper" for e in strains])
+    for p, c in sliding.items():
+        paper = c["paper"]
+        cells = [p, str(c["packings"])]
+        if "mobilised" in c:
+            cells += [_se_cell(c["mobilised"]), _se_cell(c["mobilised_0.9"]), _se_cell(c["mobilisation_mean"]),
+                      f"{c['C33_network'][0] / paper:.2f}" if paper else "-",
+                      f"{c['C33_slipping'][0] / paper:.2f}" if paper else "-",
+                      _se_cell(c["C22_slipping_over_network"])]
+        else:
+            cells += ["-"] * 6
+        for e in strains:
+            found = c["strains"].get(e) or c["strains"].get(f"{e:g}") or c["strains"].get(str(e))
+            cells.append(f"{_se_cell(found['ratio'])} ({found['pairs']})" if found else "-")
+        for e in strains:
+            found = c["strains"].get(e) or c["strains"].get(f"{e:g}") or c["strains"].get(str(e))
+            cells.append(f"{found['C33'][0] / paper:.2f}" if found and paper else "-")
+        lines.append("| " + " | ".join(cells) + " |")
+    lines.append("")
+    return lines
+
+
 def pressures_of(per_sample):
     """The pressures of the samples, in order"""
     return sorted({p for p, _, _ in per_sample})
@@ -637,6 +762,7 @@ def collect_results(out, per_sample, off_target, not_at_rest):
 
     results["checks"] = checks_table(per_sample, pressures)
     results["c33_candidates"] = {f"{p:g}": c for p, c in c33_candidates(per_sample, pressures).items()}
+    results["c33_sliding"] = {f"{p:g}": c for p, c in c33_and_sliding(out, per_sample, pressures).items()}
     # the same checks for every piston (mass, dashpot speed) at p = 1e-4, H = 25
     results["pistons"] = piston_checks(out)
     frictionless = frictionless_results(usable_samples(out, FRICTIONLESS))
@@ -857,6 +983,8 @@ def tables(results, pressures):
                          f"{c['C33_at_paper_z'] / c['paper']:.2f} | {c['r_overshoot']:+.2f} | "
                          f"{c['C33_at_least_overshoot'] / c['paper']:.2f} (p_peak/p = {c['least_overshoot']:.3g}) |")
         lines.append("")
+    if results.get("c33_sliding"):
+        lines += c33_sliding_table(results["c33_sliding"])
     for title, paper_table, keys in (
             ("Table IV (Appendix B, Eq. B2): apparent moduli of forces f0 sin(n π y / L2) on the non-rattlers, walls "
              "held, over the global moduli of the same contact network (H = 25 packings; mean ± s.d.)",

@@ -46,6 +46,7 @@ LATTICE_SERIES_ROWS = (8, 16, 32, 64, 128, 256)
 LATTICE_SERIES_WIDTH = 4                  # the pulse is uniform along x: 4 balls per row suffice
 DEFAULT_MASS, DEFAULT_SPEED = "1", "0.001"
 DEFAULT_MU = "0.5"                        # in.packing's friction coefficient (paper 003's)
+DEFAULT_MODULI_STRAIN = "0.05"            # in.moduli's strain, a fraction of the overlap (3 p)^(2/3) over h
 # the variables of in.sound that a sample's job.json sets (mu: only when it
 # is not the default, so that the command of a frictional sample stays as it was)
 SAMPLE_VARIABLES = ("p", "W", "D", "H", "seed", "piston_mass", "piston_speed")
@@ -58,10 +59,12 @@ def _number(text):
     return int(value) if value.is_integer() and re.fullmatch(r"[+-]?[0-9]+", str(text).strip()) else value
 
 
-def sample_name(p, H, seed, piston_mass=DEFAULT_MASS, piston_speed=DEFAULT_SPEED, mu=DEFAULT_MU):
+def sample_name(p, H, seed, piston_mass=DEFAULT_MASS, piston_speed=DEFAULT_SPEED, mu=DEFAULT_MU,
+                moduli_strain=DEFAULT_MODULI_STRAIN):
     """The directory name of a sample (texts as given on the command line):
     p<p>_H<H>_s<seed>, with _m<mass> and _v<speed> for another piston than
-    the default and _mu<mu> for another friction coefficient (p1e-4_H25_s1_mu0)"""
+    the default, _mu<mu> for another friction coefficient (p1e-4_H25_s1_mu0)
+    and _e<strain> for another strain of the moduli (p1e-7_H25_s1_e0.5)"""
     name = f"p{p}_H{H}_s{seed}"
     if str(piston_mass) != DEFAULT_MASS:
         name += f"_m{piston_mass}"
@@ -69,20 +72,26 @@ def sample_name(p, H, seed, piston_mass=DEFAULT_MASS, piston_speed=DEFAULT_SPEED
         name += f"_v{piston_speed}"
     if float(mu) != float(DEFAULT_MU):
         name += f"_mu{mu}"
+    if float(moduli_strain) != float(DEFAULT_MODULI_STRAIN):
+        name += f"_e{moduli_strain}"
     return name
 
 
 def sample_settings(p, H, seed, width=24, depth=0, piston_mass=DEFAULT_MASS, piston_speed=DEFAULT_SPEED,
-                    extra=(), mu=DEFAULT_MU):
+                    extra=(), mu=DEFAULT_MU, moduli_strain=DEFAULT_MODULI_STRAIN):
     """The job.json of a sample: kind "sample", the pressure (p), the target
     height (H), the seed, the width (W), the depth (D, 0: 2D), the piston's
     mass (in units of the grains') and dashpot speed, the friction
     coefficient mu of the preparation (0: a frictionless packing, measured
-    on its frictionless network), and any other variable of in.sound given
-    as (name, text) pairs in extra ("variables")"""
+    on its frictionless network), the strain of the moduli (in.moduli's
+    moduli_strain, a fraction of the overlap; only when it is not the
+    default) and any other variable of in.sound given as (name, text) pairs
+    in extra ("variables")"""
     settings = {"kind": "sample", "deck": "in.sound", "p": float(p), "H": int(H), "seed": int(seed),
                 "W": _number(width), "D": _number(depth), "piston_mass": _number(piston_mass),
                 "piston_speed": _number(piston_speed), "mu": _number(mu)}
+    if float(moduli_strain) != float(DEFAULT_MODULI_STRAIN):
+        settings["moduli_strain"] = _number(moduli_strain)
     if extra:
         settings["variables"] = {name: value for name, value in extra}
     return settings
@@ -113,6 +122,8 @@ def sample_command(lmp, here, directory, settings, texts):
         command += ["-var", name, _deck_text(settings, name, texts)]
     if "mu" in settings and float(settings["mu"]) != float(DEFAULT_MU):
         command += ["-var", "mu", _deck_text(settings, "mu", texts)]
+    if "moduli_strain" in settings:
+        command += ["-var", "moduli_strain", _deck_text(settings, "moduli_strain", texts)]
     for name, value in settings.get("variables", {}).items():
         command += ["-var", name] + str(value).split()
     return command + ["-var", "dir", directory, "-log", os.path.join(directory, "log.lammps"),
@@ -203,13 +214,14 @@ def run(args):
     for p in [] if args.no_samples else args.pressures:
         for H in args.heights:
             for seed in args.seeds:
-                directory = os.path.join(out, sample_name(p, H, seed, args.piston_mass, args.piston_speed, args.mu))
+                directory = os.path.join(out, sample_name(p, H, seed, args.piston_mass, args.piston_speed, args.mu,
+                                                          args.moduli_strain))
                 if study.read_result(directory) is not None:
                     continue
                 settings = sample_settings(p, H, seed, args.width, args.depth, args.piston_mass,
-                                           args.piston_speed, args.var or (), args.mu)
+                                           args.piston_speed, args.var or (), args.mu, args.moduli_strain)
                 texts = {"p": p, "W": args.width, "D": args.depth, "piston_mass": args.piston_mass,
-                         "piston_speed": args.piston_speed, "mu": args.mu}
+                         "piston_speed": args.piston_speed, "mu": args.mu, "moduli_strain": args.moduli_strain}
                 friction = "" if float(args.mu) == float(DEFAULT_MU) else f" mu={args.mu}"
                 jobs.append((f"p={p} H={H} seed={seed}{friction}", directory, settings,
                              sample_command(lmp, here, directory, settings, texts)))
@@ -427,6 +439,9 @@ def main(here, argv=None):
         parser.add_argument("--mu", default=DEFAULT_MU,
                             help="friction coefficient of the contacts (0.5, the paper's; others go to ..._mu<mu>); "
                                  "0: frictionless packings, measured on the frictionless network (model normal)")
+        parser.add_argument("--moduli-strain", default=DEFAULT_MODULI_STRAIN,
+                            help="the strain of the moduli, a fraction of the overlap (3 p)^(2/3) over h (0.05; "
+                                 "others go to ..._e<strain>): the same packings, C33 at a larger strain")
         parser.add_argument("--var", nargs=2, action="append", metavar=("NAME", "VALUE"),
                             help="another variable of in.sound (recorded in job.json), e.g. --var max_checks 8000")
         parser.add_argument("--no-samples", action="store_true",

@@ -116,3 +116,27 @@ def test_normal_model_is_the_frictionless_network():
     assert B.shape[1] == 2 * len(grains["id"]) and not np.any(springs[1::2])
     with pytest.raises(ValueError):
         network_moduli.network_moduli(grains, contacts, width, height, model="tangential")
+
+
+def test_contacts_at_the_coulomb_limit_lose_their_tangential_spring():
+    # every grain-grain contact of the lattice at the Coulomb limit: central
+    # springs in the bulk, C22 = (3 sqrt(3) / 4) k (the closed form at eta =
+    # 0), and no shear modulus at all, since the grains at the walls then
+    # roll freely under their wall contacts' tangential springs; with none
+    # at the limit, the network is the whole one, bit for bit
+    from acoustic_tools import sound_collect
+    k = 2.0
+    (grains, contacts), width, height, span = triangular_lattice(4, 30, k, 1e9 * k)
+    bulk = contacts[1] != 0
+    normal_force = np.full(int(bulk.sum()), 2.0)
+    tangential = {0: contacts[0][bulk], 1: contacts[1][bulk], 2: normal_force, 3: 0.5 * normal_force}
+    summary = {"W": width, "h": height}
+    sliding = sound_collect.contact_mobilisation(tangential, grains, contacts, summary, mu=0.5)
+    assert sliding["mobilised"] == 1.0 and sliding["mobilisation_mean"] == pytest.approx(1.0)
+    assert sliding["C22_slipping"] * span / height == pytest.approx(3.0 * math.sqrt(3.0) / 4.0 * k, rel=1e-5)
+    full = network_moduli.network_moduli(grains, contacts, width, height)
+    assert abs(sliding["C33_slipping"]) < 1e-4 * full["C33"]    # (the regularisation's 1e-12)
+    tangential[3] = 0.4 * normal_force
+    sticking = sound_collect.contact_mobilisation(tangential, grains, contacts, summary, mu=0.5)
+    assert sticking["mobilised"] == 0.0 and sticking["mobilised_0.9"] == 0.0
+    assert sticking["C33_slipping"] == full["C33"] and sticking["C22_slipping"] == full["C22"]

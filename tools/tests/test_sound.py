@@ -204,3 +204,35 @@ def test_c33_candidates_read_the_lines_where_asked():
     assert c["samples"] == 5 and c["slope_z"] == pytest.approx(0.01, rel=1e-9)
     assert c["C33_at_paper_z"] == pytest.approx(0.01 * (paper_z - 3.0), rel=1e-9)
     assert c["least_overshoot"] == pytest.approx(1.05) and c["paper"] == 4.0e-3
+
+
+def test_mobilisation_of_known_contacts():
+    """|F_t| / (mu F_n) of four contacts, one without normal force (left out)"""
+    found = sound.mobilisation([1.0, 2.0, 1.0, 0.0], [0.5, 0.92, 0.1, 0.0], mu=0.5)
+    assert found["fraction_at_limit"] == pytest.approx(1.0 / 3.0)
+    assert found["fraction_above_0.9"] == pytest.approx(2.0 / 3.0)
+    assert found["mean"] == pytest.approx((1.0 + 0.92 + 0.2) / 3.0)
+    assert list(found["at_limit"]) == [True, False, False, False]
+    with pytest.raises(ValueError):
+        sound.mobilisation([1.0], [0.1], mu=0.0)
+
+
+def test_c33_and_sliding_pairs_the_strains_seed_by_seed(tmp_path):
+    """C33 measured at another strain (study.py run --moduli-strain) over
+    C33 of the same seed at the default strain; a seed without its pair and
+    another height are left out"""
+    from acoustic_tools import sound_collect, study
+    per_sample = {(1e-7, 25, s): {"C33": 1e-4 * s} for s in (1, 2, 3)}
+    per_sample[(1e-7, 8, 1)] = {"C33": 1.0}
+    for s, c33 in ((1, 0.5e-4), (2, 1.2e-4), (4, 9.0)):
+        directory = tmp_path / f"p1e-7_H25_s{s}_e0.5"
+        study.write_job(str(directory), {"kind": "sample", "p": 1e-7, "H": 25, "seed": s, "piston_mass": 1.0,
+                                         "piston_speed": 0.001, "mu": 0.5, "moduli_strain": 0.5})
+        study.write_result(str(directory), {"C33": c33})
+    assert sound_collect.moduli_strains(str(tmp_path)) == [0.5]
+    entry = sound_collect.c33_and_sliding(str(tmp_path), per_sample, [1e-7])[1e-7]
+    found = entry["strains"][0.5]
+    assert found["pairs"] == 2 and found["ratio"][0] == pytest.approx((0.5 + 0.6) / 2.0)
+    assert entry["paper"] == 1.2e-4 and entry["packings"] == 0
+    assert "C33(strain 0.5) / C33 (pairs)" in "\n".join(sound_collect.c33_sliding_table(
+        {"1e-07": entry}))

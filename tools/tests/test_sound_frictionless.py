@@ -45,7 +45,7 @@ def out(tmp_path, monkeypatch):
     write_sample(tmp_path, "1e-4", 25, 1, "0", h=24.2)
     write_sample(tmp_path, "1e-4", 25, 2, "0", h=24.4)
 
-    def fake_results(path, result, model="full"):
+    def fake_results(path, result, model="full", mu=0.5):
         h = float(result["h"])
         t10, t_peak, t_zero = 4.0 * h - 3.0, 4.0 * h, 4.0 * h + 3.0
         z_star = 4.1 if model == "normal" else 3.5

@@ -198,6 +198,16 @@ def test_small_packing(jobs):
     assert moduli["C22"] == pytest.approx(network["C22"], rel=0.1)
     assert moduli["C33"] == pytest.approx(network["C33"], rel=0.25)
     assert "moduli: sigma1/sigma2" in log
+    # the tangential forces of pair granular (tangential.dump): the grain-grain
+    # contacts of the network, each within the Coulomb condition |F_t| <= mu F_n
+    # with the F_n of the network (which leaves out the damping of the grains' residual motion)
+    tangential = lammps_output.read_dump(str(tmp_path / "tangential.dump"))[-1]
+    pairs = {tuple(sorted((int(i), int(j)))): f for i, j, f in zip(contacts[0], contacts[1], contacts[2]) if j != 0}
+    dumped = {tuple(sorted((int(i), int(j)))): (fn, ft) for i, j, fn, ft in zip(*(tangential[k] for k in range(4)))}
+    assert set(dumped) == set(pairs)
+    for key, (fn, ft) in dumped.items():
+        assert fn == pytest.approx(pairs[key], rel=1e-4) and ft <= 0.5 * fn * (1.0 + 1e-9), key
+    assert 0.0 <= sound.mobilisation(tangential[2], tangential[3], 0.5)["fraction_at_limit"] < 1.0
 
 
 def test_frictionless_packing(jobs):
