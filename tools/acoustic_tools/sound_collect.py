@@ -1201,19 +1201,24 @@ def figures(results, per_sample, found, figdir, out=None):
 
 
 def frictionless_figures(usable, figdir):
-    """Fig. 4(c) (paper 003: "2D frictionless ... systems exhibit similar
-    behavior"): F_sig of the frictionless H = 25 packings at p = 1e-4
-    (usable: usable_samples(out, FRICTIONLESS)), each in grey, their
-    ensemble mean and RMS deviation, into figdir/fig4c_signal_frictionless_p1e-4.png;
-    the number of packings drawn (0: none, no figure)"""
+    """Fig. 4(c) and (d) (paper 003: "(c) 2D frictionless and (d) 3D
+    frictionless systems exhibit similar behavior"): F_sig of the
+    frictionless H = 25 packings at p = 1e-4 (usable: usable_samples(out,
+    FRICTIONLESS)), each in grey, their ensemble mean and RMS deviation,
+    into figdir/fig4c_signal_frictionless_p1e-4.png (2D) or
+    fig4d_signal_frictionless_3d_p1e-4.png (3D packings, D > 0); the
+    number of packings drawn (0: none, no figure)"""
     found, per_sample, _, _ = usable
     tall = sorted(key for key in per_sample if key[0] == 1e-4 and key[1] == 25)
     if not tall:
         return 0
     signals = [sound.read_pulse(os.path.join(found[key], "pulse_A.dat")) for key in tall]
-    sound_figures.fig4_signals(signals, sound.ensemble(signals),
-                               os.path.join(figdir, "fig4c_signal_frictionless_p1e-4.png"),
-                               f"2D frictionless (μ = 0), p = 1e-4, L ≈ 25, condition A: {len(tall)} packings")
+    if per_sample[tall[0]].get("D"):
+        name, title = "fig4d_signal_frictionless_3d_p1e-4.png", "3D frictionless spheres (μ = 0)"
+    else:
+        name, title = "fig4c_signal_frictionless_p1e-4.png", "2D frictionless (μ = 0)"
+    sound_figures.fig4_signals(signals, sound.ensemble(signals), os.path.join(figdir, name),
+                               f"{title}, p = 1e-4, L ≈ 25\ncondition A: {len(tall)} packings")
     return len(tall)
 
 

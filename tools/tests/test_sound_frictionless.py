@@ -124,3 +124,13 @@ def test_fig4c_of_the_frictionless_packings(out, tmp_path):
                                                str(figures))
     assert drawn == 2
     assert (figures / "fig4c_signal_frictionless_p1e-4.png").stat().st_size > 1000
+
+
+def test_fig4d_of_3d_frictionless_packings(out, tmp_path):
+    """3D packings (D > 0) are paper 003's Fig. 4(d), in a file of their own"""
+    found, per_sample, off_target, not_at_rest = sound_collect.usable_samples(str(out), sound_collect.FRICTIONLESS)
+    per_sample = {key: dict(r, D=8.0) for key, r in per_sample.items()}
+    drawn = sound_collect.frictionless_figures((found, per_sample, off_target, not_at_rest), str(tmp_path))
+    assert drawn == 2
+    assert (tmp_path / "fig4d_signal_frictionless_3d_p1e-4.png").stat().st_size > 1000
+    assert not (tmp_path / "fig4c_signal_frictionless_p1e-4.png").exists()
