@@ -17,6 +17,9 @@ chain_A_<N>.dat, chain_B_<N>.dat).
   chain_results, height_series, checks_table, piston_checks
                         the 1D chain, the heights at one pressure, the
                         acceptance checks beside Table I, the pistons
+  c33_candidates, c33_and_sliding, piston_samples, c33_and_piston
+                        the measured candidate causes of C33 above
+                        Table II's (z*, overshoot, sliding, strain, piston)
   collect_results       all of it: the dict of results.json
   tables                the markdown tables of tables.md
   figures               the figures (sound_figures)
@@ -699,6 +702,79 @@ def c33_sliding_table(sliding):
     return lines
 
 
+def piston_samples(out, height=25):
+    """{(mass, speed): {(p, seed): sample_results}} of every finished sample
+    of height H = height, at rest, made with another piston than the
+    default one (study.py run --piston-mass / --piston-speed)"""
+    found = {}
+    for piston in pistons(out):
+        if piston == DEFAULT_PISTON:
+            continue
+        rows = {}
+        for (p, h, seed), (directory, result) in samples(out, piston).items():
+            if h == height and result.get("at_rest"):
+                rows[(p, seed)] = sample_results(directory, result)
+        if rows:
+            found[piston] = rows
+    return found
+
+
+PISTON_KEYS = ("phi2", "z_star", "sigma_ratio", "overshoot")
+
+
+def c33_and_piston(per_sample, piston_results, pressures, height=25):
+    """C33 against the piston, per pressure: the samples of each other piston
+    (piston_samples) paired seed by seed with the default piston's
+    (per_sample, H = height): Phi2, z*, sigma1/sigma2 and the overshoot of
+    both, the network's C33 and the DEM's over the default piston's of the
+    same seed, and the network's over Table II's (means and standard
+    errors); {p: {piston name: {"pairs", key: (mean, se), "default": {key:
+    (mean, se)}, "C33_network_ratio", "C33_ratio", "C33_network_over_paper"}}}"""
+    entry = {}
+    for p in pressures:
+        by_piston = {}
+        for (mass, speed), rows in piston_results.items():
+            pairs = [(per_sample[(p, height, s)], r) for (q, s), r in sorted(rows.items())
+                     if q == p and (p, height, s) in per_sample]
+            if not pairs:
+                continue
+            c = {"pairs": len(pairs), "default": {}}
+            for key in PISTON_KEYS:
+                if all(key in a and key in b for a, b in pairs):
+                    c[key] = mean_standard_error([b[key] for _, b in pairs])
+                    c["default"][key] = mean_standard_error([a[key] for a, _ in pairs])
+            for key in ("C33_network", "C33"):
+                if all(key in a and key in b for a, b in pairs):
+                    c[f"{key}_ratio"] = mean_standard_error([b[key] / a[key] for a, b in pairs])
+            if "C33_network_ratio" in c and p in PAPER_C33:
+                c["C33_network_over_paper"] = mean_standard_error([b["C33_network"] / PAPER_C33[p]
+                                                                   for _, b in pairs])
+            by_piston[f"mass {mass:g}, dashpot speed {speed:g}"] = c
+        if by_piston:
+            entry[p] = by_piston
+    return entry
+
+
+def c33_piston_table(by_pressure):
+    """The Markdown lines of c33_and_piston (pressure keys as text)"""
+    names = {"phi2": "Φ2", "z_star": "z*", "sigma_ratio": "σ1/σ2", "overshoot": "p_peak/p"}
+    lines = _table_head(["C33 and the piston (H = 25 packings at rest, paired seed by seed with the default piston of",
+                         f"mass {DEFAULT_PISTON[0]:g} and dashpot speed {DEFAULT_PISTON[1]:g}; mean ± standard error; "
+                         "default piston's values in brackets)"],
+                        ["p", "piston", "pairs"] + [names[k] for k in PISTON_KEYS]
+                        + ["C33 network / default's", "C33 DEM / default's", "C33 network / paper"])
+    for p, by_piston in by_pressure.items():
+        for name, c in by_piston.items():
+            cells = [p, name, str(c["pairs"])]
+            for key in PISTON_KEYS:
+                cells.append(f"{_se_cell(c[key])} ({c['default'][key][0]:.3g})" if key in c else "-")
+            for key in ("C33_network_ratio", "C33_ratio", "C33_network_over_paper"):
+                cells.append(_se_cell(c[key]) if key in c else "-")
+            lines.append("| " + " | ".join(cells) + " |")
+    lines.append("")
+    return lines
+
+
 def pressures_of(per_sample):
     """The pressures of the samples, in order"""
     return sorted({p for p, _, _ in per_sample})
@@ -765,6 +841,9 @@ def collect_results(out, per_sample, off_target, not_at_rest):
     results["c33_sliding"] = {f"{p:g}": c for p, c in c33_and_sliding(out, per_sample, pressures).items()}
     # the same checks for every piston (mass, dashpot speed) at p = 1e-4, H = 25
     results["pistons"] = piston_checks(out)
+    # C33 against the piston, every pressure, paired with the default piston
+    results["c33_piston"] = {f"{p:g}": c for p, c in
+                             c33_and_piston(per_sample, piston_samples(out), pressures).items()}
     frictionless = frictionless_results(usable_samples(out, FRICTIONLESS))
     if frictionless:
         results["frictionless"] = frictionless
@@ -985,6 +1064,8 @@ def tables(results, pressures):
         lines.append("")
     if results.get("c33_sliding"):
         lines += c33_sliding_table(results["c33_sliding"])
+    if results.get("c33_piston"):
+        lines += c33_piston_table(results["c33_piston"])
     for title, paper_table, keys in (
             ("Table IV (Appendix B, Eq. B2): apparent moduli of forces f0 sin(n π y / L2) on the non-rattlers, walls "
              "held, over the global moduli of the same contact network (H = 25 packings; mean ± s.d.)",

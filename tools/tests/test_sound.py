@@ -236,3 +236,31 @@ def test_c33_and_sliding_pairs_the_strains_seed_by_seed(tmp_path):
     assert entry["paper"] == 1.2e-4 and entry["packings"] == 0
     assert "C33(strain 0.5) / C33 (pairs)" in "\n".join(sound_collect.c33_sliding_table(
         {"1e-07": entry}))
+
+
+def test_c33_and_piston_pairs_each_piston_seed_by_seed():
+    """A slower piston's samples over the default piston's of the same seed:
+    the paired ratios of the network's and the DEM's C33, the network's over
+    Table II's, the checks of both; a seed without its pair, another height
+    and a pressure without samples are left out"""
+    from acoustic_tools import sound_collect
+    per_sample = {(1e-7, 25, s): {"C33": 2e-4 * s, "C33_network": 1e-4 * s, "phi2": 0.82, "z_star": 3.2,
+                                  "sigma_ratio": 0.8, "overshoot": 50.0} for s in (1, 2, 3)}
+    per_sample[(1e-7, 8, 1)] = {"C33": 1.0, "C33_network": 1.0}
+    slow = {(1e-7, 1): {"C33": 1e-4, "C33_network": 0.8e-4, "phi2": 0.81, "z_star": 3.18,
+                        "sigma_ratio": 0.79, "overshoot": 20.0},
+            (1e-7, 2): {"C33": 3e-4, "C33_network": 1.2e-4, "phi2": 0.80, "z_star": 3.19,
+                        "sigma_ratio": 0.81, "overshoot": 10.0},
+            (1e-7, 4): {"C33": 9.0, "C33_network": 9.0, "phi2": 0.5, "z_star": 9.0,
+                        "sigma_ratio": 9.0, "overshoot": 9.0}}
+    found = sound_collect.c33_and_piston(per_sample, {(1, 3.16e-5): slow}, [1e-7, 1e-6])
+    assert list(found) == [1e-7]
+    c = found[1e-7]["mass 1, dashpot speed 3.16e-05"]
+    assert c["pairs"] == 2
+    assert c["C33_network_ratio"][0] == pytest.approx((0.8 + 0.6) / 2.0)
+    assert c["C33_ratio"][0] == pytest.approx((0.5 + 0.75) / 2.0)
+    assert c["C33_network_over_paper"][0] == pytest.approx(1.0e-4 / 1.2e-4)
+    assert c["phi2"][0] == pytest.approx(0.805) and c["default"]["phi2"][0] == pytest.approx(0.82)
+    assert c["overshoot"][0] == pytest.approx(15.0)
+    table = "\n".join(sound_collect.c33_piston_table({"1e-07": found[1e-7]}))
+    assert "| 1e-07 | mass 1, dashpot speed 3.16e-05 | 2 |" in table
