@@ -558,13 +558,16 @@ def pressure_entry(per_sample, p):
 
 def piston_checks(out):
     """The checks of the H = 25 packings at p = 1e-4 for every piston (mass,
-    dashpot speed) of the sample directories, mean and standard error, when
-    there is more than one piston: {"mass M, dashpot speed V": entry}"""
+    dashpot speed) of the sample directories that has some, mean and
+    standard error, when there is more than one piston: {"mass M, dashpot
+    speed V": entry}"""
     checks = {}
     every_piston = pistons(out)
     for piston in every_piston if len(every_piston) > 1 else []:
         every = [sample_results(path, result) for key, (path, result) in samples(out, piston).items()
                  if key[0] == 1e-4 and key[1] == 25]
+        if not every:
+            continue    # a piston of other pressures only (c33_and_piston)
         at = [r for r in every if r["at_rest"]]
         entry = {"samples": f"{len(at)} of {len(every)} at rest"}
         if not at:

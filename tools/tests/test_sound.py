@@ -264,3 +264,14 @@ def test_c33_and_piston_pairs_each_piston_seed_by_seed():
     assert c["overshoot"][0] == pytest.approx(15.0)
     table = "\n".join(sound_collect.c33_piston_table({"1e-07": found[1e-7]}))
     assert "| 1e-07 | mass 1, dashpot speed 3.16e-05 | 2 |" in table
+
+
+def test_piston_checks_leave_out_pistons_without_samples_at_1e_4(tmp_path):
+    """A piston run at 1e-7 only (a job of study.py run --piston-speed) has
+    no row in the table of the pistons at p = 1e-4"""
+    from acoustic_tools import sound_collect, study
+    for name, speed in (("p1e-7_H25_s1", 0.001), ("p1e-7_H25_s1_v3.16e-5", 3.16e-5)):
+        study.write_job(str(tmp_path / name), {"kind": "sample", "p": 1e-7, "H": 25, "seed": 1, "piston_mass": 1.0,
+                                               "piston_speed": speed, "mu": 0.5})
+    assert len(sound_collect.pistons(str(tmp_path))) == 2
+    assert sound_collect.piston_checks(str(tmp_path)) == {}
