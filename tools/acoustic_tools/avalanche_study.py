@@ -199,8 +199,12 @@ class Runner:
     """Runs jobs under out with the lmp of build on np MPI ranks, the decks
     of the directory decks (examples/avalanche); say() prints what it does."""
 
-    def __init__(self, build, out, decks, np=2, say=print, max_pieces=None, progress=None):
+    def __init__(self, build, out, decks, np=2, say=print, max_pieces=None, progress=None, recorded=None):
         self.lmp = os.path.join(os.path.abspath(build), "lammps", "lmp")
+        # the record of earlier sessions (examples/avalanche/record): a ramp
+        # or t_con run with a result there is done, a deposit never is (its
+        # restart file is not recorded)
+        self.recorded = os.path.abspath(recorded) if recorded else None
         self.decks = os.path.abspath(decks)
         if not os.access(self.lmp, os.X_OK):
             sys.exit(f"avalanche: no LAMMPS executable at {self.lmp} (build first: ./run.sh build)")
@@ -232,6 +236,13 @@ class Runner:
 
     def finished(self, s):
         return study.read_result(self.directory(s)) is not None
+
+    def recorded_result(self, s):
+        """The result.json of job s in the record, or None (not recorded, or
+        no record given)."""
+        if self.recorded is None:
+            return None
+        return study.read_result(os.path.join(self.recorded, job_name(s)))
 
     @staticmethod
     def contact(s):
@@ -269,13 +280,19 @@ class Runner:
         self.say(f"{job_name(s)}: {r['grains']} grains on {r['base']}, H = {r['H_measured']} d")
         return d
 
-    def ramp(self, s):
-        """A ramp, piece after piece; returns its result (None if it paused)."""
+    def ramp(self, s, again=False):
+        """A ramp, piece after piece; returns its result (None if it paused).
+        A ramp in the record is skipped unless again (its outputs are
+        needed: the t_con runs start from its last static state)."""
         d = self.directory(s)
         name, tag = job_name(s), s["tag"]
         if self.finished(s):
             self.say(f"{name}: done before, skipped")
             return study.read_result(d)
+        recorded = None if again else self.recorded_result(s)
+        if recorded is not None:
+            self.say(f"{name}: recorded before, skipped")
+            return recorded
         deposit = self.deposit(deposit_settings({k: s[k] for k in ("H", "seed", "free", "layer", "Edem", "rest")}))
         study.write_job(d, s)
         geometry = geometry_variables(s)
@@ -312,6 +329,20 @@ class Runner:
         self.say(f"{name}: theta_m = {result['theta_m']} deg  t_con = {result['t_con']} s  wall {result['wall_time']:.0f} s")
         return result
 
+    def rerun(self, ramp, recorded):
+        """Run a recorded ramp again for its last static state (the t_con
+        runs start from it; the record keeps no restart files).  The same
+        input on the same number of ranks gives the same ramp: its theta_m
+        must be the recorded one."""
+        self.say(f"{job_name(ramp)}: recorded, but its last static state is not in {self.out}: the ramp runs again")
+        again = self.ramp(ramp, again=True)
+        if again is None:
+            sys.exit(f"avalanche: {job_name(ramp)} paused while it ran again for its t_con runs (--max-pieces)")
+        if again.get("theta_m") != recorded.get("theta_m"):
+            sys.exit(f"avalanche: {job_name(ramp)} ran again to theta_m = {again.get('theta_m')} deg, recorded "
+                     f"{recorded.get('theta_m')} deg: not the same ramp (another build, deck or number of ranks?)")
+        return again
+
     def quiet(self, s, d, restart, geometry):
         """The tilt at rest without ultrasound to switch_on (quiet.json); the
         ramp goes on from its state 0.5 deg higher with ultrasound."""
@@ -331,16 +362,26 @@ class Runner:
     def tcon(self, ramp, steps=(1, 2, 3), angles=(), tuniform=None):
         """The t_con runs of a finished ramp at theta_m + steps and at the
         angles above theta_m."""
-        r = study.read_result(self.directory(ramp))
+        r = study.read_result(self.directory(ramp)) or self.recorded_result(ramp)
         if r is None or r.get("theta_m") is None:
             self.say(f"{job_name(ramp)}: no theta_m yet (run the ramp first), t_con runs skipped")
             return []
         tm = r["theta_m"]
         thetas = [float(f"{tm + step:.1f}") for step in steps] + [a for a in angles if a > tm + 1e-6]
+        static = os.path.join(self.directory(ramp), f"{ramp['tag']}.static.restart")
+        pending = [theta for theta in thetas if not self.finished(tcon_settings(ramp, theta, tuniform))
+                   and self.recorded_result(tcon_settings(ramp, theta, tuniform)) is None]
+        if pending and not os.path.exists(static):
+            self.rerun(ramp, r)
         results = []
         for theta in thetas:
             s = tcon_settings(ramp, theta, tuniform)
             d = self.directory(s)
+            recorded = None if self.finished(s) else self.recorded_result(s)
+            if recorded is not None:
+                self.say(f"{job_name(s)}: recorded before, skipped")
+                results.append(recorded)
+                continue
             if not self.finished(s):
                 study.write_job(d, s)
                 restart = os.path.relpath(os.path.join(self.directory(ramp), f"{ramp['tag']}.static.restart"), d)
@@ -510,13 +551,26 @@ def _runner_options(parser, here, out=None):
     parser.add_argument("--max-pieces", type=int, help="processes per ramp in one call (default: until it ends)")
 
 
+def job_height(what, job):
+    """H/d of a production job ("ramp", settings) or ("tcon", (ramp settings, options))."""
+    return (job if what == "ramp" else job[0])["H"]
+
+
+def selected(jobs, heights=None):
+    """The jobs of a production set at the given thicknesses (all if None)."""
+    if not heights:
+        return list(jobs)
+    return [(what, job) for what, job in jobs if any(abs(job_height(what, job) - h) < 1e-9 for h in heights)]
+
+
 def _run(args):
-    runner = Runner(args.build, args.out, args.decks, args.np, max_pieces=args.max_pieces)
+    recorded = None if args.record == "none" else args.record
+    runner = Runner(args.build, args.out, args.decks, args.np, max_pieces=args.max_pieces, recorded=recorded)
     unknown = [name for name in args.sets if name not in PRODUCTION]
     if unknown:
         sys.exit(f"run: unknown set {unknown[0]} ({', '.join(PRODUCTION)})")
     for name in args.sets or ["thickness"]:
-        for what, job in production(name):
+        for what, job in selected(production(name), args.heights):
             if what == "ramp":
                 runner.ramp(job)
             else:
@@ -531,6 +585,11 @@ def _run_arguments(p, here):
                         "table1; before the calibration: periodic, tcon, free, more, kappa, kappa_free, switch_on "
                         "(examples/avalanche/README.md)")
     _runner_options(p, here)
+    p.add_argument("--heights", type=float, nargs="+", metavar="H",
+                   help="only the jobs of these thicknesses (H/d), e.g. one thickness per session")
+    p.add_argument("--record", default=os.path.join(here, "record"),
+                   help="jobs with a result there are done (default examples/avalanche/record; 'none': run them "
+                        "all); a recorded ramp runs again when its t_con runs need its last static state")
 
 
 def _job_arguments(p, here):

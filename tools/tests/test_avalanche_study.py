@@ -105,3 +105,83 @@ def test_every_set_is_known_and_the_sets_before_keep_their_coupling():
         assert {s["kappa"] for _, s in a.production(name)} == {a.KAPPA_BEFORE}
     with pytest.raises(ValueError):
         a.production("nothing")
+
+
+class _FakeRunner(a.Runner):
+    """A Runner whose LAMMPS processes write what the decks would (a result
+    and the restart files) with the given theta_m, and are counted."""
+
+    def __init__(self, tmp_path, theta_m=17.5, recorded=None):
+        build = tmp_path / "build"
+        (build / "lammps").mkdir(parents=True)
+        lmp = build / "lammps" / "lmp"
+        lmp.write_text("#!/bin/sh\n")
+        lmp.chmod(0o755)
+        super().__init__(str(build), str(tmp_path / "out"), str(tmp_path), say=lambda line: None,
+                         recorded=recorded)
+        self.theta_m, self.calls = theta_m, []
+
+    def lammps(self, directory, deck, variables, log, contact=None):
+        self.calls.append((os.path.basename(directory), deck))
+        if deck == "in.deposit":
+            result = {"grains": 100, "base": 20, "H_measured": 6.0}
+            open(os.path.join(directory, "deposit.restart"), "w").close()
+        else:
+            theta = float(variables["theta0"])
+            result = {"theta_m": self.theta_m if variables["tag"].startswith("f") else theta, "t_con": 0.1}
+            open(os.path.join(directory, f"{variables['tag']}.static.restart"), "w").close()
+        a.study.write_result(directory, result)
+        return 0.0
+
+
+def _record(record, settings, result):
+    directory = os.path.join(record, a.job_name(settings))
+    a.study.write_job(directory, settings)
+    a.study.write_result(directory, result)
+
+
+def test_a_recorded_ramp_is_not_run_again(tmp_path):
+    ramp = a.ramp_settings(a.packing_settings(3, 1), 0, theta0=10)
+    _record(str(tmp_path / "record"), ramp, {"theta_m": 21.0, "t_con": None})
+    runner = _FakeRunner(tmp_path, recorded=str(tmp_path / "record"))
+    assert runner.ramp(ramp)["theta_m"] == 21.0
+    assert runner.calls == []
+    # without the record it runs (deposit, then the ramp)
+    fresh = _FakeRunner(tmp_path / "fresh")
+    assert fresh.ramp(ramp)["theta_m"] == 17.5
+    assert [deck for _, deck in fresh.calls] == ["in.deposit", "in.avalanche"]
+
+
+def test_tcon_runs_of_a_recorded_ramp_run_it_again_for_its_static_state(tmp_path):
+    ramp = a.ramp_settings(a.packing_settings(6, 2), 70e3, theta0=10)
+    record = str(tmp_path / "record")
+    _record(record, ramp, {"theta_m": 17.5, "t_con": None})
+    runner = _FakeRunner(tmp_path, recorded=record)
+    results = runner.tcon(ramp, steps=(1, 2))
+    assert [r["theta_m"] for r in results] == [18.5, 19.5]
+    assert [name for name, _ in runner.calls] == [
+        a.job_name(a.deposit_settings(a.packing_settings(6, 2))), a.job_name(ramp),
+        a.job_name(a.tcon_settings(ramp, 18.5)), a.job_name(a.tcon_settings(ramp, 19.5))]
+    # the t_con runs recorded too: nothing runs
+    for theta in (18.5, 19.5):
+        _record(record, a.tcon_settings(ramp, theta), {"theta_m": theta, "t_con": 0.2})
+    again = _FakeRunner(tmp_path / "again", recorded=record)
+    assert [r["t_con"] for r in again.tcon(ramp, steps=(1, 2))] == [0.2, 0.2]
+    assert again.calls == []
+
+
+def test_a_ramp_run_again_to_another_theta_m_stops_the_production(tmp_path):
+    ramp = a.ramp_settings(a.packing_settings(6, 3), 0, theta0=10)
+    record = str(tmp_path / "record")
+    _record(record, ramp, {"theta_m": 18.0, "t_con": None})
+    runner = _FakeRunner(tmp_path, theta_m=18.5, recorded=record)
+    with pytest.raises(SystemExit, match="not the same ramp"):
+        runner.tcon(ramp, steps=(1,))
+
+
+def test_run_selects_one_thickness():
+    jobs = a.selected(a.production("thickness"), [8.7])
+    assert len(jobs) == 8 and {s["H"] for _, s in jobs} == {8.7}
+    tcon = a.selected(a.production("tcon_cal"), [6, 14.4])
+    assert len(tcon) == 16 and {ramp["H"] for _, (ramp, _) in tcon} == {6.0, 14.4}
+    assert a.selected(a.production("table1")) == a.production("table1")
