@@ -737,6 +737,11 @@ def print_calibrated_thetam(label, by_h, summary):
     print("\n(s.e.: the standard error of the mean, s.d./√n; the shift is θ_m(0 kHz) − θ_m(70 kHz) of each "
           "packing with both ramps; paper 000 states 20° / 14.5° at 3 d and 17° at 14.4 d, the other values "
           "are interpolated as in Fig. 7)")
+    print("\nfirst angle with a flow that spreads (partial or uniform; θ_m is the first uniform flow, paper 000's "
+          "criterion), mean ± s.d. (s.e.):")
+    for r in rows:
+        print(f"- H = {r['H']:g} d: 0 kHz {with_error(r['onset0'])}°, 70 kHz {with_error(r['onset70'])}°, "
+              f"shift paired by packing {with_error(r['onset_shift'])}° ({r['onset_shift'][2]} pairs)")
     print(f"\nslope of θ_m(H/d), all packings: 0 kHz {slope_text(s0)}, 70 kHz {slope_text(s70)} "
           f"(paper 000 ≈ {PAPER_SLOPE}°/d)")
     print("\nper packing (seed: θ_m 0 / 70 kHz, shift, t_con at θ_m 0 / 70 kHz):")

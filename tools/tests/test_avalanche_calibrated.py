@@ -85,6 +85,19 @@ def test_theta_m_per_thickness_with_standard_errors_and_the_paired_shift(collect
     assert summary["geometries"]["free ends, 400 d"]["rows"][0]["shift"] == pytest.approx([4.25, 1.5 / np.sqrt(2), 2])
 
 
+def test_the_first_spreading_flow_beside_theta_m(collect, tmp_path):
+    # 70 kHz ramps that creep and spread (partial) before they flow uniformly
+    for seed, f0, onset, f70 in ((1, 21.0, 16.5, 21.0), (2, 19.5, 17.0, 19.0)):
+        p = Pack(tmp_path, 3, seed, 3.0, kappa=KAPPA)
+        p.ramp("f0", uniform_at(f0), f0, 0.5)
+        p.creeping(10.0, onset, f70)
+    text = markdown(collect, tmp_path, tmp_path / "tables")
+    # theta_m shift: 0 and 0.5; first spreading: 0 kHz 21, 19.5 (= theta_m), 70 kHz 16.5, 17: shifts 4.5, 2.5
+    assert "| 0.25 ± 0.35 (0.25)° | 2 |" in text
+    assert ("- H = 3 d: 0 kHz 20.25 ± 1.06 (0.75)°, 70 kHz 16.75 ± 0.35 (0.25)°, "
+            "shift paired by packing 3.50 ± 1.41 (1.00)° (2 pairs)") in text
+
+
 def test_tcon_at_the_same_distance_above_theta_m(collect, tmp_path):
     s1 = ramps(Pack(tmp_path, 6, 1, 6.0, kappa=KAPPA), 18.0, 16.0, tcon0=0.8, tcon70=0.3)
     s2 = ramps(Pack(tmp_path, 6, 2, 6.0, kappa=KAPPA), 17.5, 15.5, tcon0=0.6, tcon70=0.1)
