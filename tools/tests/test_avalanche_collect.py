@@ -413,7 +413,16 @@ def test_the_committed_record_gives_its_tables(collect, tmp_path):
     assert sorted(data["ensembles"]["free ends, 400 d"]) == [3.0, 6.0, 8.7, 11.4, 14.4]
     assert data["kappa"]["kappa"] == [] and {r[0] for r in data["kappa"]["kappa_free"]} == {0.1, 0.2, 0.3}
     assert {r[2] for r in data["switch_on"]} == {0.17, 0.3}
+    # issue 42's production at the calibrated coupling, recorded so far:
+    # Table 1 and the four free-ends packings at 3 d (both frequencies)
+    cal = data["calibrated"]
+    assert [(r[0], r[1], r[6], r[7]) for r in cal["table1"]] == [(3.0, 8524, 60.0, 88.0), (14.4, 33744, 232.0, 442.0)]
+    r3 = cal["summary"]["free ends, 400 d"][0][0]
+    assert r3["H"] == 3.0 and r3["theta0"][2] == 4 and r3["shift"][:1] == (0.0,) and r3["shift"][2] == 4
     markdown = collect.write_tables(data, str(tmp_path))
-    assert markdown.startswith("\n### free ends, 400 d\n")
-    assert sorted(os.listdir(tmp_path)) == ["kappa_free.txt", "summary.json", "tables.md", "tcon.txt", "thetam.txt",
-                                            "thetam_k0.17.txt"]
+    assert markdown.startswith("\n## The study at kappa_scale 0.17 (the calibrated coupling)\n")
+    assert "\n### free ends, 400 d\n" in markdown.split("## Before the calibration")[1]
+    assert "| 3 | 8524 + 2786, 2786 d | 0.1 / 0.1 | 60 / 88 | 32 % | 49 % (N = 8000) |" in markdown
+    assert sorted(os.listdir(tmp_path)) == ["kappa_free.txt", "summary.json", "summary_calibrated.json", "table1.txt",
+                                            "tables.md", "tcon.txt", "tcon_calibrated.txt", "thetam.txt",
+                                            "thetam_calibrated.txt", "thetam_k0.17.txt"]
