@@ -1018,6 +1018,10 @@ def draw_figures(data, figdir):
                           coupling=BEFORE_LABEL)
     elif label is not None:
         figs.fig_tcon(out("fig8_tcon.png"), data["tcon"] + data["paper_tcon"], dpi=100, coupling=coupling)
+    if cal is not None and cal["label"] is not None:
+        rows = percolation_rows(cal["ensembles"][cal["label"]])
+        if rows:
+            figs.fig_percolation(out("fig11_percolation.png"), rows, CALIBRATED_LABEL, dpi=100)
     if label is not None or (cal is not None and cal["label"] is not None):
         # the figures from dumps and series: the calibrated ensemble's where it is there
         by_h = cal["ensembles"][cal["label"]] if cal is not None and cal["label"] is not None \
@@ -1057,6 +1061,20 @@ def draw_figures(data, figdir):
         figs.fig_kappa(out("kappa_shift_calibrated.png"),
                        [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in cal["kappa_table"]], dpi=270)
     return written
+
+
+def percolation_rows(by_h):
+    """Rows (H, packing, f (kHz), angle, largest mobile fraction, state) of
+    every tested angle of the ramps of an ensemble ({H: [packings]}): how far
+    the moving zones spread at each slope (paper 000's Fig. 11)."""
+    rows = []
+    for H, packs in sorted(by_h.items()):
+        for p in packs:
+            for tag, f in (("f0", 0.0), ("f70", 70.0)):
+                r = study.read_result(p["dirs"][tag]) if tag in p["dirs"] else None
+                for a in (r or {}).get("angles", []):
+                    rows.append((H, p["seed"], f, float(a["theta"]), float(a["max_mobile"]), a["state"]))
+    return rows
 
 
 def held_series(packs, tag, theta):
@@ -1130,6 +1148,40 @@ def collect(top, tables):
     return write_tables(study_data(top), tables)
 
 
+# paper 000's snapshot figures: (file, [(frequency, U0/d, ms after the tilt)],
+# the times paper 000 shows)
+SNAPSHOT_FIGURES = (
+    ("fig10_snapshots.png", ((70e3, 1e-5, 51), (70e3, 1e-5, 52)), "Fig. 10: 0.051 and 0.052 s"),
+    ("fig12_snapshot_30kHz.png", ((30e3, 1e-5, 72),), "Fig. 12: 0.072 s"),
+    ("fig13_amplitudes.png", ((70e3, 1e-3, 18), (70e3, 1e-4, 18), (70e3, 1e-5, 18), (70e3, 1e-6, 18)),
+     "Fig. 13: 0.018 s"))
+
+
+def snapshot_figures(top, figdir):
+    """Figs. 10, 12 and 13 from the snapshot jobs in top (the record's
+    snapshot_*ms.json, or a production's dumps), those whose snapshots are
+    all there; returns the paths written."""
+    from .avalanche_snapshots import read_snapshots
+    found = {}
+    for job in _jobs(top).values():
+        s = job["settings"]
+        if s.get("kind") == "snapshot":
+            for t, snap in read_snapshots(job["dir"], s).items():
+                found[(float(s["freq"]), float(s["U0"]), t)] = snap
+    written = []
+    for name, wanted, paper in SNAPSHOT_FIGURES:
+        snaps = [found.get((f, u, t)) for f, u, t in wanted]
+        if any(snap is None for snap in snaps):
+            continue
+        titles = [f"f = {snap['freq'] / 1e3:g} kHz, $U_0/d$ = {snap['U0_over_d']:.0e}, "
+                  f"$\\theta$ = {snap['theta']:g}°, t = {snap['t_ms']:g} ms after the drive ({paper})"
+                  for snap in snaps]
+        os.makedirs(figdir, exist_ok=True)
+        written.append(os.path.join(figdir, name))
+        figs.fig_snapshots(written[-1], snaps, titles, dpi=100)
+    return written
+
+
 def figures(top, figdir):
-    """The figures of the jobs in top (draw_figures) into figdir."""
-    return draw_figures(study_data(top), figdir)
+    """The figures of the jobs in top (draw_figures, snapshot_figures) into figdir."""
+    return draw_figures(study_data(top), figdir) + snapshot_figures(top, figdir)

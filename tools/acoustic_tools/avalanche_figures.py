@@ -305,6 +305,126 @@ def fig_chains(path, atoms, c, dpi=110):
     return _save(fig, path, dpi)
 
 
+def fig_percolation(path, rows, coupling="", dpi=110):
+    """Paper 000's Fig. 11: how far the moving zones spread at each slope,
+    with and without ultrasound: the largest fraction of the observed grains
+    that move (|v| > vmob) at each tested angle of each ramp, one panel per
+    H/d, one line per packing and frequency; rows (H, packing, f (kHz),
+    angle, fraction, state) (avalanche_collect.percolation_rows), a star at
+    the uniform flow (theta_m)."""
+    heights = sorted({r[0] for r in rows})
+    with plt.rc_context(READABLE):
+        fig, axes = plt.subplots(1, len(heights), figsize=(6.5 * len(heights) + 1, 5.2), squeeze=False)
+        for ax, H in zip(axes[0], heights):
+            mine = [r for r in rows if r[0] == H]
+            packings = sorted({r[1] for r in mine}, key=int)
+            for f, marker, name in ((0.0, "o", "0 kHz"), (70.0, "s", "70 kHz")):
+                for k, seed in enumerate(packings):
+                    line = sorted((r[3], r[4], r[5]) for r in mine if r[1] == seed and r[2] == f)
+                    if not line:
+                        continue
+                    theta, frac, state = zip(*line)
+                    ax.plot(theta, frac, marker=marker, ms=5, lw=1.2, color=COLOUR[int(f)], alpha=0.85,
+                            label=name if k == 0 else None)
+                    for t, v, st in line:
+                        if st == "uniform":
+                            ax.plot(t, v, "*", ms=15, color=COLOUR[int(f)], mec="k", mew=0.6)
+            ax.set_ylim(0, 1.02)
+            ax.set_xlabel(r"slope angle $\theta$ (°)")
+            ax.set_title(f"H = {H:g} d ({len(packings)} packings)")
+            ax.grid(alpha=0.3)
+        axes[0][0].set_ylabel("largest fraction of grains moving at the angle")
+        axes[0][0].plot([], [], "*", ms=13, color="0.5", mec="k", label=r"uniform flow ($\theta_m$)")
+        axes[0][0].legend(loc="upper left")
+        fig.suptitle("Moving zones against the slope, without and with 70 kHz" + (f": {coupling}" if coupling else ""))
+        fig.tight_layout()
+    return _save(fig, path, dpi)
+
+
+def _segments(grains, contacts):
+    """The contacts between two grains of a snapshot (avalanche_snapshots)
+    as line segments, with their f_n and mu*/mu (wall contacts dropped)."""
+    index = {int(t): k for k, t in enumerate(grains["id"])}
+    keep = [k for k, (i, j) in enumerate(zip(contacts["i"], contacts["j"])) if int(i) in index and int(j) in index]
+    x, y = grains["x"], grains["y"]
+    segments = [[(x[index[int(contacts["i"][k])]], y[index[int(contacts["i"][k])]]),
+                 (x[index[int(contacts["j"][k])]], y[index[int(contacts["j"][k])]])] for k in keep]
+    return segments, contacts["fn"][keep], contacts["mu_ratio"][keep]
+
+
+def _disks(ax, grains, d):
+    """The grains of a snapshot as light disks, lengths in d."""
+    from matplotlib.collections import PatchCollection
+    from matplotlib.patches import Circle
+    ax.add_collection(PatchCollection([Circle((x / d, y / d), r / d) for x, y, r in
+                                       zip(grains["x"], grains["y"], grains["radius"])],
+                                      facecolor="0.93", edgecolor="0.78", linewidth=0.3))
+
+
+def snapshot_panels(axes, snap, arrow_scale=None):
+    """The three panels of one snapshot (paper 000's Fig. 10 a-c): the force
+    chains on a linear scale (line width proportional to f_n), the
+    vibration-induced displacements q = (U0 q)/U0 as arrows (their length
+    scaled for visibility, colour |q|), the force chains on a logarithmic
+    scale coloured by the friction reduction 1 - mu*/mu (0: unchanged, blue;
+    1: friction gone, red).  Lengths in d from the window's left end.
+    Returns the two colour mappables (|q|, 1 - mu*/mu)."""
+    g, d = snap["grains"], snap["d"]
+    x0 = snap["window"][0]
+    shifted = dict(g, x=g["x"] - x0)
+    segments, fn, ratio = _segments(shifted, snap["contacts"])
+    segments = [[(a / d, b / d) for a, b in seg] for seg in segments]
+    fmax = fn.max() if len(fn) else 1.0
+    y0 = (g["y"] - g["radius"]).min() / d
+    for ax in axes:
+        _disks(ax, shifted, d)
+        ax.set_xlim(0, (snap["window"][1] - x0) / d)
+        ax.set_ylim(y0 - 0.5, (g["y"] + g["radius"]).max() / d + 0.5)
+        ax.set_aspect("equal")
+        ax.set_ylabel("y / d")
+    axes[0].add_collection(LineCollection(segments, linewidths=0.2 + 3.5 * fn / fmax, colors="k"))
+    q = np.hypot(g["qx"], g["qy"]) / snap["U0"]
+    moving = g["type"] == 1
+    scale = arrow_scale or (np.percentile(q[moving], 99) / 1.2 if moving.any() and q[moving].max() > 0 else 1.0)
+    arrows = axes[1].quiver(shifted["x"][moving] / d, g["y"][moving] / d, g["qx"][moving] / snap["U0"],
+                            g["qy"][moving] / snap["U0"], q[moving], cmap="viridis", angles="xy", scale_units="xy",
+                            scale=scale, width=0.0022)
+    fpos = fn[fn > 0]
+    lo = np.log10(fpos.min()) if len(fpos) else 0.0
+    hi = np.log10(fmax) if len(fpos) else 1.0
+    widths = 0.3 + 2.5 * (np.log10(np.maximum(fn, 10 ** lo)) - lo) / max(hi - lo, 1e-12)
+    chains = LineCollection(segments, linewidths=widths, cmap="coolwarm", array=1.0 - ratio)
+    chains.set_clim(0, 1)
+    axes[2].add_collection(chains)
+    return arrows, chains
+
+
+def fig_snapshots(path, snaps, titles, dpi=110):
+    """Paper 000's Figs. 10, 12, 13: one row per snapshot (its title in
+    titles), three panels per row (snapshot_panels); one colour bar for |q|
+    per row and one for 1 - mu*/mu."""
+    rows = len(snaps)
+    g0, d0 = snaps[0]["grains"], snaps[0]["d"]
+    aspect = ((g0["y"] + g0["radius"]).max() - (g0["y"] - g0["radius"]).min() + d0) / (
+        snaps[0]["window"][1] - snaps[0]["window"][0])
+    with plt.rc_context(READABLE):
+        fig = plt.figure(figsize=(21, rows * (7 * aspect + 2.2)), layout="constrained")
+        for sub, snap, title in zip(np.atleast_1d(fig.subfigures(rows, 1)), snaps, titles):
+            axes = sub.subplots(1, 3)
+            arrows, chains = snapshot_panels(axes, snap)
+            sub.suptitle(title, fontsize=14)
+            axes[0].set_title("force chains (line width $\\propto f_n$)", fontsize=12)
+            axes[1].set_title("vibration-induced displacement $q/U_0$ (arrows not to scale)", fontsize=12)
+            axes[2].set_title(r"force chains (log $f_n$), colour $(\mu_p - \mu^*)/\mu_p$", fontsize=12)
+            sub.colorbar(arrows, ax=axes[1], orientation="horizontal", fraction=0.08, pad=0.04,
+                         label=r"$|q|/U_0$")
+            sub.colorbar(chains, ax=axes[2], orientation="horizontal", fraction=0.08, pad=0.04,
+                         label=r"friction reduction $1 - \mu^*/\mu$")
+            for ax in axes:
+                ax.set_xlabel("x / d (a window at the layer's middle)")
+    return _save(fig, path, dpi)
+
+
 def fig_calibration(path, results, dpi=110):
     """The calibration scan (the results of
     avalanche_calibration.calibration_scan, `examples/avalanche/study.py calibrate`'s

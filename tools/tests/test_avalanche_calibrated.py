@@ -212,7 +212,8 @@ def test_figures_draw_the_calibrated_study_beside_the_sensitivity_study(collect,
     assert drawn["free_label"] == ("free ends, 400 d, kappa_scale 0.3 (run before the calibration: "
                                    "sensitivity study)")
     assert drawn["table"][:, 3] == pytest.approx([16.25, 15.75]) and drawn["free"][:, 3] == pytest.approx([21, 14.5])
-    assert [os.path.basename(w) for w in written] == ["fig7_thetam.png", "fig8_tcon.png", "fig8_tcon_k0.3.png"]
+    assert [os.path.basename(w) for w in written] == ["fig7_thetam.png", "fig8_tcon.png", "fig8_tcon_k0.3.png",
+                                                      "fig11_percolation.png"]
     assert all(open(w, "rb").read(4) == b"\x89PNG" for w in written)
 
 
@@ -269,3 +270,17 @@ def test_the_production_sets_of_issue_42_reach_the_tables(collect, tmp_path):
     assert sorted(os.listdir(tmp_path / "tables")) == [
         "kappa_calibrated.txt", "summary.json", "summary_calibrated.json", "table1.txt", "tables.md",
         "tcon_calibrated.txt", "thetam_calibrated.txt"]
+
+
+def test_percolation_rows_are_every_tested_angle_of_the_calibrated_ramps(collect, thickness):
+    cal = collect.calibrated_study(str(thickness))
+    rows = collect.percolation_rows(cal["ensembles"][cal["label"]])
+    # H = 3 d: packings 1, 2 at both frequencies, packing 3 at 0 Hz; H = 6 d: two packings, both
+    ramps = {(H, seed, f) for H, seed, f, *_ in rows}
+    assert ramps == {(3.0, "1", 0.0), (3.0, "1", 70.0), (3.0, "2", 0.0), (3.0, "2", 70.0), (3.0, "3", 0.0),
+                     (6.0, "1", 0.0), (6.0, "1", 70.0), (6.0, "2", 0.0), (6.0, "2", 70.0)}
+    # uniform_at(theta): the angles from theta - 1 in 0.5 deg steps, uniform at theta (theta_m)
+    assert sorted(r[3] for r in rows if r[:3] == (3.0, "2", 70.0)) == [16.5, 17.0, 17.5]
+    assert [r[3] for r in rows if r[5] == "uniform" and r[:3] == (6.0, "1", 0.0)] == [18.0]
+    # the ramps at 0.3 are not among them
+    assert not any(r[3] == 22.0 for r in rows if r[0] == 3.0 and r[2] == 0.0)
