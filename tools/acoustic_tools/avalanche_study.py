@@ -140,6 +140,22 @@ def ramp_settings(packing, freq, kappa=KAPPA, source="bottom", theta0=None, tfol
     return s
 
 
+def snapshot_settings(packing, freq, U0, times, theta=None):
+    """Paper 000's snapshots (Figs. 10, 12, 13): the packing tilted at rest
+    without ultrasound to theta - 0.5 deg, then at theta with the drive at
+    freq Hz and U0 (in d) switched on, held 0.1 s (nothing followed), a
+    frame of the grains (with the drive's displacements, dumpq) and of the
+    contacts every ms; times: the ms after the tilt to theta that the record
+    keeps (avalanche_snapshots)."""
+    theta = SNAPSHOT_THETA if theta is None else float(theta)
+    s = ramp_settings(packing, freq, theta0=theta, thetamax=theta, tfollow=0, switch_on=theta - 0.5, piece=0,
+                      dumpevery=1, dumplocal=1)
+    mantissa, exponent = f"{float(U0):.0e}".split("e")
+    s.update(kind="snapshot", tag=f"snap_f{_g(float(freq) / 1e3)}_u{mantissa}e{int(exponent)}", U0=float(U0), dumpq=1,
+             snapshots=[int(t) for t in times])
+    return s
+
+
 def tcon_settings(ramp, theta, tuniform=None):
     """One angle theta above the theta_m of a ramp (its settings), from its
     last static state, followed like any angle of the ramp."""
@@ -304,6 +320,10 @@ class Runner:
                   "tfollow": _g(s["tfollow"]), "tsettle": _g(s["tsettle"]), "thetamax": _g(s["thetamax"]),
                   "obslo": geometry["obslo"], "obshi": geometry["obshi"], "dumpevery": s["dumpevery"],
                   "dumplocal": s["dumplocal"], "tpiece": piece}
+        if s.get("U0") is not None:
+            common["U0"] = _number(s["U0"])
+        if s.get("dumpq"):
+            common["dumpq"] = 1
         restart = os.path.relpath(os.path.join(deposit, "deposit.restart"), d)
         pieces = 0
         while study.read_result(d) is None:
@@ -414,6 +434,15 @@ PAPER_LAYER, PAPER_WINDOW = 2000, 571   # d: paper 000's layers (Table 1's N) an
 TABLE1 = ((3, 8000), (14.4, 32000))     # (H/d, grains) of paper 000's Table 1 rows measured
 TABLE1_THETA = 10.0                     # deg: the angle of the Table 1 runs, below every theta_m
 GRAINS_PER_AREA = 0.79 * 4 / 3.141592653589793 / (1 + 0.2 ** 2 / 3)   # in.deposit's grains per d^2 (poly 0.2)
+# paper 000's snapshots: H = 14.4 d at 15 deg, the packing whose theta_m
+# without ultrasound (18 deg, record/free400_H14.4_s4_f0) lies as far above
+# 15 deg as paper 000's (17 deg) or more, so that it rests there before the
+# drive; (frequency, U0/d, ms after the tilt kept): Fig. 10 (70 kHz, 51 and
+# 52 ms), Fig. 12 (30 kHz, 72 ms), Fig. 13 (70 kHz, U0/d = 1e-3 ... 1e-6,
+# 18 ms)
+SNAPSHOT_H, SNAPSHOT_SEED, SNAPSHOT_THETA = 14.4, 4, 15.0
+SNAPSHOTS = ((70e3, 1e-5, (18, 51, 52)), (30e3, 1e-5, (72,)), (70e3, 1e-3, (18,)), (70e3, 1e-4, (18,)),
+             (70e3, 1e-6, (18,)))
 
 
 def _periodic(H, seed, layer):
@@ -466,6 +495,10 @@ def production(name):
                      for f in (0, 70e3)]
     elif name == "table1":
         jobs += [("ramp", table1_settings(H, n, f)) for H, n in TABLE1 for f in (0, 70e3)]
+    elif name == "snapshots":
+        # Figs. 10, 12, 13: one packing at 15 deg, the drive switched on at rest
+        jobs += [("ramp", snapshot_settings(free(SNAPSHOT_H, SNAPSHOT_SEED), f, U0, times))
+                 for f, U0, times in SNAPSHOTS]
     elif name in ("periodic", "tcon", "free", "more", "kappa", "kappa_free", "switch_on"):
         jobs = _before(name)
     else:
@@ -522,15 +555,21 @@ def _before(name):
 
 
 # issue 42's sets at KAPPA first, then those of RESULTS.md at KAPPA_BEFORE
-PRODUCTION = ("thickness", "tcon_cal", "sensitivity", "paper_length", "table1",
+PRODUCTION = ("thickness", "tcon_cal", "sensitivity", "paper_length", "table1", "snapshots",
               "periodic", "tcon", "free", "more", "kappa", "kappa_free", "switch_on")
 
 
 def record(out, dest):
     """Copy job.json, result.json (and quiet.json) of every finished job in
-    out into dest/<job>/ (study.record_jobs); returns the number of jobs
-    written."""
-    return study.record_jobs(out, dest, files=(study.JOB, study.RESULT, "quiet.json"))
+    out into dest/<job>/ (study.record_jobs), and a snapshot job's frames at
+    its times cut to the layer's middle (avalanche_snapshots); returns the
+    number of jobs written."""
+    from .avalanche_snapshots import write_snapshots
+    written = study.record_jobs(out, dest, files=(study.JOB, study.RESULT, "quiet.json"))
+    for directory, settings, _ in study.finished_jobs(out):
+        if settings.get("kind") == "snapshot":
+            write_snapshots(directory, settings, os.path.join(dest, os.path.basename(directory)))
+    return written
 
 
 # ---------------------------------------------------------------- command line
@@ -582,7 +621,7 @@ def _run(args):
 def _run_arguments(p, here):
     p.add_argument("sets", nargs="*", metavar="SET",
                    help="at the calibrated coupling: thickness (default), tcon_cal, sensitivity, paper_length, "
-                        "table1; before the calibration: periodic, tcon, free, more, kappa, kappa_free, switch_on "
+                        "table1, snapshots; before the calibration: periodic, tcon, free, more, kappa, kappa_free, switch_on "
                         "(examples/avalanche/README.md)")
     _runner_options(p, here)
     p.add_argument("--heights", type=float, nargs="+", metavar="H",
