@@ -796,7 +796,7 @@ void FixAcousticMindlin::set_amplitudes()
         amplitude_atom[i][2 * k] = amplitude * qk.real();
         amplitude_atom[i][2 * k + 1] = amplitude * qk.imag();
       } else {
-        amplitude_atom[i][k] = amplitude * std::abs(qk);
+        amplitude_atom[i][k] = amplitude * qk.real();    // the undamped solution is real
       }
     }
   }

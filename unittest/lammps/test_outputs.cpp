@@ -233,7 +233,7 @@ TEST(Outputs, FixAveAtom)
     EXPECT_EQ(averaged_shape, direct_shape);
   }
   double largest = 0.0;
-  for (const auto &kv : by_id(L, amp->array_atom, 1)) largest = std::max(largest, kv.second);
+  for (const auto &kv : by_id(L, amp->array_atom, 1)) largest = std::max(largest, std::fabs(kv.second));
   EXPECT_GT(largest, 0.0);
 }
 
