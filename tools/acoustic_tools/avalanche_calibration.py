@@ -161,8 +161,9 @@ def calibration_scan(restart, material, freq, scans, sources=SOURCES, spectrum=T
 def band_top(lmp, kappa, share=0.999, fmax=150e3, bins=150, moments=512):
     """The frequency below which `share` of the modes of the network lie
     (stiffness hertz of glass at kappa_scale kappa, base clamped, as
-    in.modes -var method kpm) and the share of them below 75 kHz and in
-    5-45 kHz (paper 000's Fig. 3)"""
+    in.modes -var method kpm), the share of them below 75 kHz and in 5-45
+    kHz, and the density of states (rows centre (Hz), density (1/Hz):
+    paper 000's Fig. 3)"""
     lmp.commands_string(f"""
 compute         band all vibration/modes stiffness hertz ${{Eglass}} ${{nuglass}} kappa_scale {kappa} &
                 fixed base method kpm bins {bins} 0 {fmax} moments {moments}
@@ -173,7 +174,8 @@ run             0 post no
     below, (top,) = band_from_density(hist[:, 0], hist[:, 1], 75e3, (share,))
     in_5_45 = band_from_density(hist[:, 0], hist[:, 1], 45e3, ())[0] - band_from_density(hist[:, 0], hist[:, 1],
                                                                                          5e3, ())[0]
-    return {"kappa": float(kappa), "share": share, "top": top, "below_75kHz": below, "in_5_45kHz": in_5_45}
+    return {"kappa": float(kappa), "share": share, "top": top, "below_75kHz": below, "in_5_45kHz": in_5_45,
+            "histogram": hist[:, :2].tolist()}
 
 
 def band_calibration(restart, material, target=75e3, share=0.999, reference=0.3, check=None):

@@ -39,6 +39,7 @@ Reading:
                         all of it: tables and summary.json, and the figures
 """
 import contextlib
+import glob
 import io
 import json
 import os
@@ -1182,6 +1183,28 @@ def snapshot_figures(top, figdir):
     return written
 
 
+def band_figures(top, figdir):
+    """Paper 000's Fig. 3 at the calibrated coupling: the density of states
+    of each band calibration kept in top/band/ (`study.py calibrate --band`
+    on a deposit, its JSON) at the study's coupling; returns the paths
+    written."""
+    written = []
+    for path in sorted(glob.glob(os.path.join(str(top), "band", "*.json"))):
+        with open(path) as handle:
+            band = json.load(handle)
+        at = band.get("at_check")
+        if not at or "histogram" not in at:
+            continue
+        name = os.path.splitext(os.path.basename(path))[0]
+        title = (f"{name} ({band['grains']} grains), kappa_scale {at['kappa']:g}: 99.9 % of the modes below "
+                 f"{at['top'] / 1e3:.1f} kHz (paper 000: 75 kHz), {100 * at['in_5_45kHz']:.0f} % in 5-45 kHz")
+        os.makedirs(figdir, exist_ok=True)
+        written.append(os.path.join(figdir, f"fig3_modes_{name}.png"))
+        figs.fig_modes(written[-1], histogram=np.array(at["histogram"]), histogram_name=title, dpi=260)
+    return written
+
+
 def figures(top, figdir):
-    """The figures of the jobs in top (draw_figures, snapshot_figures) into figdir."""
-    return draw_figures(study_data(top), figdir) + snapshot_figures(top, figdir)
+    """The figures of the jobs in top (draw_figures, snapshot_figures,
+    band_figures) into figdir."""
+    return draw_figures(study_data(top), figdir) + snapshot_figures(top, figdir) + band_figures(top, figdir)

@@ -791,6 +791,7 @@ def _calibrate(args):
     if args.band:
         result = band_calibration(os.path.abspath(args.restart), os.path.join(args.decks, "in.material"), args.band,
                                   check=KAPPA)
+        result["restart"] = os.path.relpath(os.path.abspath(args.restart), args.decks)   # no machine's path
         with open(args.output, "w") as handle:
             json.dump(result, handle, indent=1)
         ref, at, check = result["reference"], result["at_kappa"], result["at_check"]

@@ -284,3 +284,19 @@ def test_percolation_rows_are_every_tested_angle_of_the_calibrated_ramps(collect
     assert [r[3] for r in rows if r[5] == "uniform" and r[:3] == (6.0, "1", 0.0)] == [18.0]
     # the ramps at 0.3 are not among them
     assert not any(r[3] == 22.0 for r in rows if r[0] == 3.0 and r[2] == 0.0)
+
+
+def test_fig3_from_a_kept_band_calibration(collect, tmp_path):
+    centres = (np.arange(150) + 0.5) * 1e3
+    density = np.where(centres < 75e3, 1.0 / 75e3, 0.0)
+    at = {"kappa": KAPPA, "share": 0.999, "top": 74.9e3, "below_75kHz": 1.0, "in_5_45kHz": 0.53,
+          "histogram": np.column_stack([centres, density]).tolist()}
+    (tmp_path / "band").mkdir()
+    with open(tmp_path / "band" / "free400_H14.4_s4.json", "w") as f:
+        json.dump({"grains": 6023, "target": 75e3, "kappa": 0.171, "at_check": at}, f)
+    with open(tmp_path / "band" / "old.json", "w") as f:          # a calibration without its histogram
+        json.dump({"grains": 10, "at_check": {k: v for k, v in at.items() if k != "histogram"}}, f)
+    written = collect.band_figures(str(tmp_path), str(tmp_path / "figures"))
+    assert [os.path.basename(w) for w in written] == ["fig3_modes_free400_H14.4_s4.png"]
+    import matplotlib.image
+    assert matplotlib.image.imread(written[0]).shape[1] >= 1200

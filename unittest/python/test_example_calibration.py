@@ -137,3 +137,10 @@ def test_band_calibration_puts_the_band_top_at_the_target(layer):
     assert result["at_check"]["kappa"] == KAPPA
     assert result["at_check"]["top"] == pytest.approx(60e3 * (KAPPA / kappa) ** (1 / 3), abs=1e3)
     assert f"below 60 kHz at kappa_scale {kappa:.3f}" in done.stdout
+    # the density of states at the study's coupling (paper 000's Fig. 3) is
+    # kept: its band top is the one reported
+    from acoustic_tools import avalanche as av
+    import numpy as np
+    hist = np.array(result["at_check"]["histogram"])
+    assert hist.shape == (150, 2)
+    assert av.band_from_density(hist[:, 0], hist[:, 1], 75e3, (0.999,))[1][0] == result["at_check"]["top"]
