@@ -1204,7 +1204,73 @@ def band_figures(top, figdir):
     return written
 
 
+def job_fields(job):
+    """The fields of a calibrated job (avalanche_fields): its fields.json in
+    a record, or made from its dumps in a production; None without."""
+    from .avalanche_fields import job_fields as from_dumps, read_fields
+    from .avalanche_study import geometry_variables, keeps_fields
+    kept = read_fields(job["dir"])
+    if kept is not None or not keeps_fields(job["settings"]):
+        return kept
+    g = geometry_variables(job["settings"])
+    return from_dumps(job["dir"], job["settings"], job["result"], (float(g["obslo"]), float(g["obshi"])))
+
+
+def fields_runs(top, H, seed="1"):
+    """{(f kHz, "below" or "at"): (title, fields of one angle)} of packing
+    `seed` at H/d: the last angle below theta_m that its ramp followed, and
+    theta_m held 1.2 s (the fields set's t_con run at theta_m, else the
+    ramp's own theta_m, cut short when the flow became uniform)."""
+    jobs = [j for j in _jobs(top).values() if _in_ensemble(j, KAPPA) and j["settings"].get("free") == 1
+            and abs(float(j["settings"]["H"]) - H) < 1e-9 and str(j["settings"]["seed"]) == str(seed)]
+    out = {}
+    for f_khz, tag in ((0, "f0"), (70, "f70")):
+        ramp = next((j for j in jobs if j["settings"]["kind"] == "ramp" and j["settings"]["tag"] == tag), None)
+        fields = job_fields(ramp) if ramp is not None else None
+        if fields is None:
+            continue
+        tm = fields["theta_m"]
+        below = [a for a in fields["angles"] if tm is None or a["theta"] < tm - 1e-6]
+        if below:
+            a = below[-1]
+            what = f"θ_m − {tm - a['theta']:g}°" if tm is not None else "no flow"
+            out[(f_khz, "below")] = (f"{f_khz} kHz, θ = {a['theta']:g}° ({what})", a)
+        hold = next((j for j in jobs if j["settings"]["kind"] == "tcon" and j["settings"].get("ramp_tag") == tag
+                     and tm is not None and abs(float(j["settings"]["theta"]) - tm) < 1e-6
+                     and j["settings"].get("tuniform") is not None), None)
+        held = job_fields(hold) if hold is not None else None
+        at = held["angles"][0] if held else next((a for a in fields["angles"] if tm is not None
+                                                  and abs(a["theta"] - tm) < 1e-6), None)
+        if at is not None:
+            out[(f_khz, "at")] = (f"{f_khz} kHz, θ = {at['theta']:g}° (θ_m" + (", held" if held else
+                                                                              ", until uniform") + ")", at)
+    return out
+
+
+def fields_figures(top, figdir):
+    """Figs. 6/9 (the motion below and at theta_m, 0 and 70 kHz) and Fig. 14
+    (speed along the layer at theta_m, 0 against 70 kHz) of packing 1 at
+    each thickness of FIELDS_H whose fields are there; returns the paths."""
+    from .avalanche_study import FIELDS_H
+    written = []
+    for H in FIELDS_H:
+        runs = fields_runs(top, float(H))
+        order = [(0, "below"), (0, "at"), (70, "below"), (70, "at")]
+        if not runs:
+            continue
+        os.makedirs(figdir, exist_ok=True)
+        written.append(os.path.join(figdir, f"fig6_9_fields_H{H:g}.png"))
+        figs.fig_fields(written[-1], [runs[k] for k in order if k in runs])
+        front = [(f"{k[0]} kHz, " + runs[k][0].split(", ", 1)[1], k[0], runs[k][1]) for k in order
+                 if k in runs and k[1] == "at"]
+        if front:
+            written.append(os.path.join(figdir, f"fig14_front_H{H:g}.png"))
+            figs.fig_front(written[-1], front)
+    return written
+
+
 def figures(top, figdir):
     """The figures of the jobs in top (draw_figures, snapshot_figures,
-    band_figures) into figdir."""
-    return draw_figures(study_data(top), figdir) + snapshot_figures(top, figdir) + band_figures(top, figdir)
+    band_figures, fields_figures) into figdir."""
+    return (draw_figures(study_data(top), figdir) + snapshot_figures(top, figdir) + band_figures(top, figdir)
+            + fields_figures(top, figdir))

@@ -341,6 +341,81 @@ def fig_percolation(path, rows, coupling="", dpi=110):
     return _save(fig, path, dpi)
 
 
+def fig_fields(path, runs, dpi=100):
+    """Paper 000's Figs. 6 and 9: for each run (title, the fields of one
+    angle: avalanche_fields.angle_fields) a column of the grains' speed over
+    the observation window at the kept times since the tilt (0 to 1.2 s;
+    cells of the window, log colour scale shared by all runs) above
+    sigma_1 and sigma_2 against time with the uniform-flow criteria."""
+    from .avalanche_fields import as_array
+    from matplotlib.colors import LogNorm
+    n = max(len(f["snapshots"]) for _, f in runs)
+    speeds = np.concatenate([as_array(snap["speed"]).ravel() for _, f in runs for snap in f["snapshots"]])
+    speeds = speeds[np.isfinite(speeds) & (speeds > 0)]
+    norm = LogNorm(vmin=max(np.percentile(speeds, 1), 1e-6) if len(speeds) else 1e-5,
+                   vmax=max(speeds.max(), 1e-5) if len(speeds) else 1e-2)
+    with plt.rc_context(READABLE):
+        fig, axes = plt.subplots(n + 1, len(runs), figsize=(6.2 * len(runs), 0.95 * n + 4.2), squeeze=False,
+                                 gridspec_kw={"height_ratios": [1] * n + [4.0]})
+        image = None
+        for col, (title, f) in enumerate(runs):
+            x0, x1 = f["window_d"]
+            for row in range(n):
+                ax = axes[row][col]
+                ax.set_xticks([])
+                ax.set_yticks([])
+                if row >= len(f["snapshots"]):
+                    ax.axis("off")
+                    continue
+                snap = f["snapshots"][row]
+                field = as_array(snap["speed"])
+                image = ax.imshow(np.where(field > 0, field, np.nan), origin="lower", aspect="auto", norm=norm,
+                                  cmap="viridis", extent=(x0, x1, 0, field.shape[0] * f["cell_d"][1]))
+                ax.set_ylabel(f"{snap['t']:.1f} s", rotation=0, ha="right", va="center", fontsize=11)
+            axes[0][col].set_title(title, fontsize=12)
+            ax = axes[n][col]
+            t = np.array(f["sigma_t"])
+            ax.semilogy(t, as_array(f["sigma1"]), color="tab:blue", label=r"$\sigma_1$ (top half)")
+            ax.semilogy(t, as_array(f["sigma2"]), color="tab:red", label=r"$\sigma_2$ (bottom half)")
+            ax.axhline(av.EPS_SIGMA1, color="tab:blue", ls="--", lw=1)
+            ax.axhline(av.EPS_SIGMA2, color="tab:red", ls="--", lw=1)
+            ax.set_xlim(0, 1.3)
+            ax.set_ylim(0.05, 100)
+            ax.set_xlabel("time since the tilt (s)")
+            ax.legend(loc="upper right", fontsize=10)
+        axes[n][0].set_ylabel(r"$\sigma_l$ (dashed: criteria)")
+        if image is not None:
+            bar = fig.colorbar(image, ax=axes[:n, :].ravel().tolist(), orientation="vertical", fraction=0.02,
+                               pad=0.01)
+            bar.set_label("grain speed (m/s), cells of the observation window")
+    return _save(fig, path, dpi)
+
+
+def fig_front(path, runs, t=0.2, dpi=100):
+    """Paper 000's Fig. 14 (c, d) as a profile: the grains' mean speed in
+    columns along the whole layer (back at the left, front at the right),
+    divided by its mean over the layer, at the kept time nearest t since the
+    tilt to theta_m; runs: (label, frequency (kHz), the fields of that
+    angle).  A flow led by the front rises to the right; a uniform one is
+    flat."""
+    from .avalanche_fields import as_array
+    with plt.rc_context(READABLE):
+        fig, ax = plt.subplots(figsize=(13, 5.5))
+        for label, f_khz, f in runs:
+            snap = min(f["snapshots"], key=lambda s: abs(s["t"] - t))
+            x = np.array(snap["column_x"])
+            speed = as_array(snap["columns"])
+            ax.plot(x - x.min(), speed / np.nanmean(speed), "-o", ms=3.5, color=COLOUR.get(int(f_khz), "0.4"),
+                    label=f"{label}, t = {snap['t']:.2f} s")
+        ax.axhline(1.0, color="0.6", lw=0.8)
+        ax.set_yscale("log")
+        ax.set_xlabel("distance from the back of the layer (d); the front is at the right")
+        ax.set_ylabel("mean grain speed / its mean over the layer")
+        ax.legend(fontsize=10)
+        ax.grid(alpha=0.3)
+    return _save(fig, path, dpi)
+
+
 def _segments(grains, contacts):
     """The contacts between two grains of a snapshot (avalanche_snapshots)
     as line segments, with their f_n and mu*/mu (wall contacts dropped)."""

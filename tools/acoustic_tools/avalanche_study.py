@@ -150,20 +150,22 @@ def snapshot_settings(packing, freq, U0, times, theta=None):
     theta = SNAPSHOT_THETA if theta is None else float(theta)
     s = ramp_settings(packing, freq, theta0=theta, thetamax=theta, tfollow=0, switch_on=theta - 0.5, piece=0,
                       dumpevery=1, dumplocal=1)
+    s["quiet_theta0"] = 10.0     # the tilt at rest as the ramps make it (a quick pre-ramp to 14 deg flows)
     mantissa, exponent = f"{float(U0):.0e}".split("e")
     s.update(kind="snapshot", tag=f"snap_f{_g(float(freq) / 1e3)}_u{mantissa}e{int(exponent)}", U0=float(U0), dumpq=1,
              snapshots=[int(t) for t in times])
     return s
 
 
-def tcon_settings(ramp, theta, tuniform=None):
+def tcon_settings(ramp, theta, tuniform=None, dumpevery=0):
     """One angle theta above the theta_m of a ramp (its settings), from its
-    last static state, followed like any angle of the ramp."""
+    last static state, followed like any angle of the ramp; dumpevery: ms
+    between dump frames (0: none)."""
     tag = f"tcon_{ramp['tag']}_{theta:.1f}" + (f"_u{_g(tuniform)}" if tuniform is not None else "")
     s = {k: ramp[k] for k in ("H", "seed", "free", "layer", "Edem", "rest", "freq", "kappa", "source", "tfollow",
                               "deposit", "window") if k in ramp}
     s.update(kind="tcon", tag=tag, ramp_tag=ramp["tag"], ramp=job_name(ramp), theta=float(f"{theta:.1f}"),
-             tuniform=None if tuniform is None else float(tuniform), switch_on=None)
+             tuniform=None if tuniform is None else float(tuniform), switch_on=None, dumpevery=int(dumpevery))
     return s
 
 
@@ -365,23 +367,35 @@ class Runner:
 
     def quiet(self, s, d, restart, geometry):
         """The tilt at rest without ultrasound to switch_on (quiet.json); the
-        ramp goes on from its state 0.5 deg higher with ultrasound."""
-        on = s["switch_on"]
-        self.lammps(d, "in.avalanche", {"tag": "quiet", "freq": 0, "kappa": _g(s["kappa"]), "source": s["source"],
-                                        "tsettle": _g(s["tsettle"]), "obslo": geometry["obslo"],
-                                        "obshi": geometry["obshi"], "dumpevery": 0, "restart": restart,
-                                        "theta0": _g(on), "thetamax": _g(on), "resultfile": "quiet.json"},
-                    "log.quiet", self.contact(s))
-        with open(os.path.join(d, "quiet.json")) as f:
+        ramp goes on from its state 0.5 deg higher with ultrasound.  By
+        default a quick pre-ramp to switch_on - 0.5 deg, in the job's
+        directory; with quiet_theta0 the ramp's protocol from that angle
+        (0.5 deg steps, each held) to switch_on, run once for every job of
+        the packing that starts there (a directory of its own, shared)."""
+        on, start = s["switch_on"], s.get("quiet_theta0")
+        where = d if start is None else os.path.join(self.out, f"{packing_name(s)}_quiet{_g(start)}-{_g(on)}")
+        os.makedirs(where, exist_ok=True)
+        done = os.path.join(where, "quiet.json")
+        if start is None or not (os.path.exists(done) and os.path.exists(os.path.join(where, "quiet.static.restart"))):
+            self.lammps(where, "in.avalanche",
+                        {"tag": "quiet", "freq": 0, "kappa": _g(s["kappa"]), "source": s["source"],
+                         "tsettle": _g(s["tsettle"]), "obslo": geometry["obslo"], "obshi": geometry["obshi"],
+                         "dumpevery": 0, "restart": os.path.relpath(os.path.join(d, restart), where),
+                         "theta0": _g(on if start is None else start), "thetamax": _g(on),
+                         "resultfile": "quiet.json"}, "log.quiet", self.contact(s))
+        with open(done) as f:
             quiet = json.load(f)
+        if where != d:
+            shutil.copyfile(done, os.path.join(d, "quiet.json"))
         if not any(a["theta"] == on and a["state"] in ("stable", "stopped") for a in quiet["angles"]):
             sys.exit(f"avalanche: {job_name(s)}: the layer is not at rest at {on:g} deg without ultrasound "
-                     "(quiet.json); switch_on must lie below theta_m at 0 Hz")
-        return {"restart": "quiet.static.restart", "pre": 0, "theta0": f"{on + 0.5:.2f}"}
+                     f"({done}); switch_on must lie below theta_m at 0 Hz")
+        return {"restart": os.path.relpath(os.path.join(where, "quiet.static.restart"), d), "pre": 0,
+                "theta0": f"{on + 0.5:.2f}"}
 
-    def tcon(self, ramp, steps=(1, 2, 3), angles=(), tuniform=None):
+    def tcon(self, ramp, steps=(1, 2, 3), angles=(), tuniform=None, dumpevery=0):
         """The t_con runs of a finished ramp at theta_m + steps and at the
-        angles above theta_m."""
+        angles above theta_m; dumpevery: ms between dump frames (0: none)."""
         r = study.read_result(self.directory(ramp)) or self.recorded_result(ramp)
         if r is None or r.get("theta_m") is None:
             self.say(f"{job_name(ramp)}: no theta_m yet (run the ramp first), t_con runs skipped")
@@ -389,13 +403,13 @@ class Runner:
         tm = r["theta_m"]
         thetas = [float(f"{tm + step:.1f}") for step in steps] + [a for a in angles if a > tm + 1e-6]
         static = os.path.join(self.directory(ramp), f"{ramp['tag']}.static.restart")
-        pending = [theta for theta in thetas if not self.finished(tcon_settings(ramp, theta, tuniform))
-                   and self.recorded_result(tcon_settings(ramp, theta, tuniform)) is None]
+        pending = [theta for theta in thetas if not self.finished(tcon_settings(ramp, theta, tuniform, dumpevery))
+                   and self.recorded_result(tcon_settings(ramp, theta, tuniform, dumpevery)) is None]
         if pending and not os.path.exists(static):
             self.rerun(ramp, r)
         results = []
         for theta in thetas:
-            s = tcon_settings(ramp, theta, tuniform)
+            s = tcon_settings(ramp, theta, tuniform, dumpevery)
             d = self.directory(s)
             recorded = None if self.finished(s) else self.recorded_result(s)
             if recorded is not None:
@@ -409,7 +423,7 @@ class Runner:
                              "kappa": _g(s["kappa"]), "source": s["source"], "theta0": f"{theta:.1f}",
                              "thetamax": f"{theta:.1f}", "tfollow": _g(s["tfollow"]),
                              "obslo": geometry_variables(s)["obslo"], "obshi": geometry_variables(s)["obshi"],
-                             "dumpevery": 0}
+                             "dumpevery": s["dumpevery"]}
                 if tuniform is not None:
                     variables["tuniform"] = _g(tuniform)
                 self.lammps(d, "in.avalanche", variables, f"log.{s['tag']}", self.contact(s))
@@ -441,6 +455,10 @@ GRAINS_PER_AREA = 0.79 * 4 / 3.141592653589793 / (1 + 0.2 ** 2 / 3)   # in.depos
 # 52 ms), Fig. 12 (30 kHz, 72 ms), Fig. 13 (70 kHz, U0/d = 1e-3 ... 1e-6,
 # 18 ms)
 SNAPSHOT_H, SNAPSHOT_SEED, SNAPSHOT_THETA = 14.4, 4, 15.0
+# paper 000's Figs. 6, 9, 14: the motion over 1.2 s at theta_m (the fields
+# set) and at the angles below it (the ramps' own frames), kept in the record
+# as fields.json (avalanche_fields) for the calibrated jobs at these H/d
+FIELDS_H, FIELDS_HOLD = (6, 14.4), 1.2
 SNAPSHOTS = ((70e3, 1e-5, (18, 51, 52)), (30e3, 1e-5, (72,)), (70e3, 1e-3, (18,)), (70e3, 1e-4, (18,)),
              (70e3, 1e-6, (18,)))
 
@@ -495,6 +513,13 @@ def production(name):
                      for f in (0, 70e3)]
     elif name == "table1":
         jobs += [("ramp", table1_settings(H, n, f)) for H, n in TABLE1 for f in (0, 70e3)]
+    elif name == "fields":
+        # Figs. 6, 9 and 14: packing 1 at 6 and 14.4 d held 1.2 s at its
+        # theta_m at both frequencies (from the ramp's last static state, the
+        # uniform criterion held 1.2 s), with dump frames (fields.json)
+        for H in FIELDS_H:
+            jobs += [("tcon", (ramp_settings(free(H, 1), f, theta0=10),
+                               {"steps": (0,), "tuniform": FIELDS_HOLD, "dumpevery": 50})) for f in (0, 70e3)]
     elif name == "snapshots":
         # Figs. 10, 12, 13: one packing at 15 deg, the drive switched on at rest
         jobs += [("ramp", snapshot_settings(free(SNAPSHOT_H, SNAPSHOT_SEED), f, U0, times))
@@ -555,7 +580,7 @@ def _before(name):
 
 
 # issue 42's sets at KAPPA first, then those of RESULTS.md at KAPPA_BEFORE
-PRODUCTION = ("thickness", "tcon_cal", "sensitivity", "paper_length", "table1", "snapshots",
+PRODUCTION = ("thickness", "tcon_cal", "sensitivity", "paper_length", "table1", "snapshots", "fields",
               "periodic", "tcon", "free", "more", "kappa", "kappa_free", "switch_on")
 
 
@@ -564,12 +589,26 @@ def record(out, dest):
     out into dest/<job>/ (study.record_jobs), and a snapshot job's frames at
     its times cut to the layer's middle (avalanche_snapshots); returns the
     number of jobs written."""
+    from .avalanche_fields import write_fields
     from .avalanche_snapshots import write_snapshots
     written = study.record_jobs(out, dest, files=(study.JOB, study.RESULT, "quiet.json"))
-    for directory, settings, _ in study.finished_jobs(out):
+    for directory, settings, result in study.finished_jobs(out):
+        target = os.path.join(dest, os.path.basename(directory))
         if settings.get("kind") == "snapshot":
-            write_snapshots(directory, settings, os.path.join(dest, os.path.basename(directory)))
+            write_snapshots(directory, settings, target)
+        elif keeps_fields(settings):
+            geometry = geometry_variables(settings)
+            write_fields(directory, settings, result, target, (float(geometry["obslo"]), float(geometry["obshi"])))
     return written
+
+
+def keeps_fields(settings):
+    """Whether the record keeps the motion of a job (fields.json): a ramp or
+    t_con run at the calibrated coupling at the thicknesses FIELDS_H, free
+    ends, ultrasound on from the start, with dump frames."""
+    return (settings.get("kind") in ("ramp", "tcon") and float(settings.get("kappa", KAPPA_BEFORE)) == KAPPA
+            and any(abs(float(settings.get("H", 0)) - H) < 1e-9 for H in FIELDS_H) and settings.get("free") == 1
+            and settings.get("switch_on") is None)
 
 
 # ---------------------------------------------------------------- command line
@@ -621,7 +660,7 @@ def _run(args):
 def _run_arguments(p, here):
     p.add_argument("sets", nargs="*", metavar="SET",
                    help="at the calibrated coupling: thickness (default), tcon_cal, sensitivity, paper_length, "
-                        "table1, snapshots; before the calibration: periodic, tcon, free, more, kappa, kappa_free, switch_on "
+                        "table1, snapshots, fields; before the calibration: periodic, tcon, free, more, kappa, kappa_free, switch_on "
                         "(examples/avalanche/README.md)")
     _runner_options(p, here)
     p.add_argument("--heights", type=float, nargs="+", metavar="H",

@@ -57,7 +57,8 @@ class _Runner(a.Runner):
             study.write_result(directory, {"grains": 6000, "base": 300, "H_measured": 14.4})
         elif variables.get("resultfile") == "quiet.json":
             with open(os.path.join(directory, "quiet.json"), "w") as f:
-                json.dump({"angles": [{"theta": float(variables["theta0"]), "state": "stable"}]}, f)
+                json.dump({"angles": [{"theta": float(variables["thetamax"]), "state": "stable"}]}, f)
+            open(os.path.join(directory, "quiet.static.restart"), "w").close()
         else:
             study.write_result(directory, {"theta_m": None, "t_con": None})
         return 0.0
@@ -70,10 +71,16 @@ def test_the_runner_tilts_at_rest_then_drives_with_the_jobs_amplitude(tmp_path):
     decks = [(deck, v.get("tag")) for deck, v in runner.calls]
     assert decks == [("in.deposit", None), ("in.avalanche", "quiet"), ("in.avalanche", "snap_f70_u1e-3")]
     quiet, drive = runner.calls[1][1], runner.calls[2][1]
-    assert quiet["freq"] == 0 and quiet["theta0"] == "14.5" and "dumpq" not in quiet
+    # the tilt at rest is the ramps' protocol from 10 deg (a quick pre-ramp to 14 deg makes the layer flow)
+    assert quiet["freq"] == 0 and (quiet["theta0"], quiet["thetamax"]) == ("10", "14.5") and "dumpq" not in quiet
+    assert quiet["restart"] == "../free400_H14.4_s4_deposit/deposit.restart"
     assert (drive["theta0"], drive["thetamax"], drive["tfollow"]) == ("15.00", "15", "0")
     assert (drive["U0"], drive["dumpq"], drive["dumpevery"], drive["dumplocal"]) == ("0.001", 1, 1, 1)
-    assert drive["restart"] == "quiet.static.restart" and drive["pre"] == 0
+    assert drive["restart"] == "../free400_H14.4_s4_quiet10-14.5/quiet.static.restart" and drive["pre"] == 0
+    assert os.path.exists(os.path.join(runner.directory(s), "quiet.json"))
+    # the other snapshot jobs start from the same tilt: it runs once
+    runner.ramp(a.production("snapshots")[0][1])
+    assert [v.get("tag") for _, v in runner.calls[3:]] == ["snap_f70_u1e-5"]
     # an ordinary ramp sets neither
     ramp = _Runner(tmp_path / "other")
     ramp.ramp(a.ramp_settings(a.packing_settings(6, 1), 70e3))
