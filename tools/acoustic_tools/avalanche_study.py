@@ -151,6 +151,7 @@ def snapshot_settings(packing, freq, U0, times, theta=None):
     s = ramp_settings(packing, freq, theta0=theta, thetamax=theta, tfollow=0, switch_on=theta - 0.5, piece=0,
                       dumpevery=1, dumplocal=1)
     s["quiet_theta0"] = 10.0     # the tilt at rest as the ramps make it (a quick pre-ramp to 14 deg flows)
+    s["tuniform"] = SNAPSHOT_UNIFORM    # a flow is followed the whole 0.1 s, not ended when it becomes uniform
     mantissa, exponent = f"{float(U0):.0e}".split("e")
     s.update(kind="snapshot", tag=f"snap_f{_g(float(freq) / 1e3)}_u{mantissa}e{int(exponent)}", U0=float(U0), dumpq=1,
              snapshots=[int(t) for t in times])
@@ -326,6 +327,8 @@ class Runner:
             common["U0"] = _number(s["U0"])
         if s.get("dumpq"):
             common["dumpq"] = 1
+        if s.get("tuniform") is not None:
+            common["tuniform"] = _g(s["tuniform"])
         restart = os.path.relpath(os.path.join(deposit, "deposit.restart"), d)
         pieces = 0
         while study.read_result(d) is None:
@@ -455,6 +458,7 @@ GRAINS_PER_AREA = 0.79 * 4 / 3.141592653589793 / (1 + 0.2 ** 2 / 3)   # in.depos
 # 52 ms), Fig. 12 (30 kHz, 72 ms), Fig. 13 (70 kHz, U0/d = 1e-3 ... 1e-6,
 # 18 ms)
 SNAPSHOT_H, SNAPSHOT_SEED, SNAPSHOT_THETA = 14.4, 4, 15.0
+SNAPSHOT_UNIFORM = 1.0    # s: the uniform criterion must hold longer than the angle's 0.1 s (never met)
 # paper 000's Figs. 6, 9, 14: the motion over 1.2 s at theta_m (the fields
 # set) and at the angles below it (the ramps' own frames), kept in the record
 # as fields.json (avalanche_fields) for the calibrated jobs at these H/d
