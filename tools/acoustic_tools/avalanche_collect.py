@@ -1196,7 +1196,7 @@ def band_figures(top, figdir):
         if not at or "histogram" not in at:
             continue
         name = os.path.splitext(os.path.basename(path))[0]
-        title = (f"{name} ({band['grains']} grains), kappa_scale {at['kappa']:g}: 99.9 % of the modes below "
+        title = (f"{name} ({band['grains']} atoms, base included), kappa_scale {at['kappa']:g}: 99.9 % of the modes below "
                  f"{at['top'] / 1e3:.1f} kHz (paper 000: 75 kHz), {100 * at['in_5_45kHz']:.0f} % in 5-45 kHz")
         os.makedirs(figdir, exist_ok=True)
         written.append(os.path.join(figdir, f"fig3_modes_{name}.png"))
