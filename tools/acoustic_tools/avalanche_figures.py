@@ -436,11 +436,11 @@ def _disks(ax, grains, d):
                                       facecolor="0.93", edgecolor="0.78", linewidth=0.3))
 
 
-def snapshot_panels(axes, snap, arrow_scale=None):
+def snapshot_panels(axes, snap, arrow_floor=1e-3):
     """The three panels of one snapshot (paper 000's Fig. 10 a-c): the force
     chains on a linear scale (line width proportional to f_n), the
-    vibration-induced displacements q = (U0 q)/U0 as arrows (their length
-    scaled for visibility, colour |q|), the force chains on a logarithmic
+    vibration-induced displacements q = (U0 q)/U0 as arrows (their
+    direction; colour |q|/U0 on a log scale from arrow_floor), the force chains on a logarithmic
     scale coloured by the friction reduction 1 - mu*/mu (0: unchanged, blue;
     1: friction gone, red).  Lengths in d from the window's left end.
     Returns the two colour mappables (|q|, 1 - mu*/mu)."""
@@ -459,11 +459,15 @@ def snapshot_panels(axes, snap, arrow_scale=None):
         ax.set_ylabel("y / d")
     axes[0].add_collection(LineCollection(segments, linewidths=0.2 + 3.5 * fn / fmax, colors="k"))
     q = np.hypot(g["qx"], g["qy"]) / snap["U0"]
-    moving = g["type"] == 1
-    scale = arrow_scale or (np.percentile(q[moving], 99) / 1.2 if moving.any() and q[moving].max() > 0 else 1.0)
-    arrows = axes[1].quiver(shifted["x"][moving] / d, g["y"][moving] / d, g["qx"][moving] / snap["U0"],
-                            g["qy"][moving] / snap["U0"], q[moving], cmap="viridis", angles="xy", scale_units="xy",
-                            scale=scale, width=0.0022)
+    moving = (g["type"] == 1) & (q > 0)
+    # arrows of one length (0.8 d: the direction), coloured by |q|/U0 on a
+    # log scale: the response falls by decades away from the driven grains
+    from matplotlib.colors import LogNorm
+    unit = 0.8 / np.maximum(q[moving], 1e-300)
+    arrows = axes[1].quiver(shifted["x"][moving] / d, g["y"][moving] / d, g["qx"][moving] / snap["U0"] * unit,
+                            g["qy"][moving] / snap["U0"] * unit, q[moving], cmap="viridis", angles="xy",
+                            scale_units="xy", scale=1.0, width=0.0025, pivot="middle",
+                            norm=LogNorm(vmin=arrow_floor, vmax=max(1.0, q[moving].max() if moving.any() else 1.0)))
     fpos = fn[fn > 0]
     lo = np.log10(fpos.min()) if len(fpos) else 0.0
     hi = np.log10(fmax) if len(fpos) else 1.0
@@ -489,10 +493,10 @@ def fig_snapshots(path, snaps, titles, dpi=110):
             arrows, chains = snapshot_panels(axes, snap)
             sub.suptitle(title, fontsize=14)
             axes[0].set_title("force chains (line width $\\propto f_n$)", fontsize=12)
-            axes[1].set_title("vibration-induced displacement $q/U_0$ (arrows not to scale)", fontsize=12)
+            axes[1].set_title("vibration-induced displacement $q/U_0$ (arrows: direction only)", fontsize=12)
             axes[2].set_title(r"force chains (log $f_n$), colour $(\mu_p - \mu^*)/\mu_p$", fontsize=12)
             sub.colorbar(arrows, ax=axes[1], orientation="horizontal", fraction=0.08, pad=0.04,
-                         label=r"$|q|/U_0$")
+                         label=r"$|q|/U_0$ (log scale)")
             sub.colorbar(chains, ax=axes[2], orientation="horizontal", fraction=0.08, pad=0.04,
                          label=r"friction reduction $1 - \mu^*/\mu$")
             for ax in axes:

@@ -458,7 +458,7 @@ GRAINS_PER_AREA = 0.79 * 4 / 3.141592653589793 / (1 + 0.2 ** 2 / 3)   # in.depos
 # 52 ms), Fig. 12 (30 kHz, 72 ms), Fig. 13 (70 kHz, U0/d = 1e-3 ... 1e-6,
 # 18 ms)
 SNAPSHOT_H, SNAPSHOT_SEED, SNAPSHOT_THETA = 14.4, 4, 15.0
-SNAPSHOT_UNIFORM = 1.0    # s: the uniform criterion must hold longer than the angle's 0.1 s (never met)
+SNAPSHOT_UNIFORM = 0.1    # s: the uniform criterion must hold the whole 0.1 s of the angle (in.avalanche: at most twin + tfollow)
 # paper 000's Figs. 6, 9, 14: the motion over 1.2 s at theta_m (the fields
 # set) and at the angles below it (the ramps' own frames), kept in the record
 # as fields.json (avalanche_fields) for the calibrated jobs at these H/d

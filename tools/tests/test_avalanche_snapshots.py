@@ -77,7 +77,7 @@ def test_the_runner_tilts_at_rest_then_drives_with_the_jobs_amplitude(tmp_path):
     assert (drive["theta0"], drive["thetamax"], drive["tfollow"]) == ("15.00", "15", "0")
     assert (drive["U0"], drive["dumpq"], drive["dumpevery"], drive["dumplocal"]) == ("0.001", 1, 1, 1)
     # a flow that becomes uniform is still followed the whole 0.1 s (paper 000's frames at 18-72 ms)
-    assert drive["tuniform"] == "1" and "tuniform" not in quiet
+    assert drive["tuniform"] == "0.1" and "tuniform" not in quiet
     assert drive["restart"] == "../free400_H14.4_s4_quiet10-14.5/quiet.static.restart" and drive["pre"] == 0
     assert os.path.exists(os.path.join(runner.directory(s), "quiet.json"))
     # the other snapshot jobs start from the same tilt: it runs once
