@@ -391,28 +391,34 @@ def fig_fields(path, runs, dpi=100):
     return _save(fig, path, dpi)
 
 
-def fig_front(path, runs, t=0.2, dpi=100):
-    """Paper 000's Fig. 14 (c, d) as a profile: the grains' mean speed in
+def fig_front(path, runs, times=(0.2, 0.4), dpi=100):
+    """Paper 000's Fig. 14 (c, d) as profiles: the grains' mean speed in
     columns along the whole layer (back at the left, front at the right),
-    divided by its mean over the layer, at the kept time nearest t since the
-    tilt to theta_m; runs: (label, frequency (kHz), the fields of that
-    angle).  A flow led by the front rises to the right; a uniform one is
-    flat."""
+    divided by its mean over the layer, at the kept times nearest `times`
+    (s since the tilt to theta_m), one panel each; runs: (label, frequency
+    (kHz), the fields of that angle).  A flow led by its ends has still
+    columns between them; a uniform one is flat."""
     from .avalanche_fields import as_array
     with plt.rc_context(READABLE):
-        fig, ax = plt.subplots(figsize=(13, 5.5))
-        for label, f_khz, f in runs:
-            snap = min(f["snapshots"], key=lambda s: abs(s["t"] - t))
-            x = np.array(snap["column_x"])
-            speed = as_array(snap["columns"])
-            ax.plot(x - x.min(), speed / np.nanmean(speed), "-o", ms=3.5, color=COLOUR.get(int(f_khz), "0.4"),
-                    label=f"{label}, t = {snap['t']:.2f} s")
-        ax.axhline(1.0, color="0.6", lw=0.8)
-        ax.set_yscale("log")
-        ax.set_xlabel("distance from the back of the layer (d); the front is at the right")
-        ax.set_ylabel("mean grain speed / its mean over the layer")
-        ax.legend(fontsize=10)
-        ax.grid(alpha=0.3)
+        fig, axes = plt.subplots(len(times), 1, figsize=(13, 4.6 * len(times)), squeeze=False, sharex=True)
+        for ax, t in zip(axes[:, 0], times):
+            for label, f_khz, f in runs:
+                snap = min(f["snapshots"], key=lambda s: abs(s["t"] - t))
+                x = np.array(snap["column_x"])
+                speed = as_array(snap["columns"])
+                ratio = speed / np.nanmean(speed)
+                ax.plot(x - x.min(), ratio, "-o", ms=3.5, color=COLOUR.get(int(f_khz), "0.4"),
+                        label=f"{label}, t = {snap['t']:.2f} s: {100 * np.mean(ratio > 0.1):.0f} % of the "
+                              "columns above 0.1")
+            ax.axhline(1.0, color="0.6", lw=0.8)
+            ax.axhline(0.1, color="0.6", lw=0.8, ls=":")
+            ax.set_yscale("log")
+            ax.set_ylabel("mean speed / layer mean")
+            ax.set_title(f"{t:g} s after the tilt to $\\theta_m$", fontsize=13)
+            ax.legend(fontsize=10, loc="lower center")
+            ax.grid(alpha=0.3)
+        axes[-1][0].set_xlabel("distance from the back of the layer (d), 10 d columns; the front is at the right")
+        fig.tight_layout()
     return _save(fig, path, dpi)
 
 
