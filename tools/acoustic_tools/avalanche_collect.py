@@ -716,7 +716,9 @@ def calibrated_study(top):
     main = geometry_label((1, float(DEFAULT_LAYER), None, None))
     return {"ensembles": ens, "summary": {label: summarise(by_h) for label, by_h in ens.items()},
             "geometries": {label: key for key, label in geometries(jobs, KAPPA)},
-            "label": main if main in ens else None, "sensitivity": sens, "table1": t1}
+            "label": main if main in ens else None, "sensitivity": sens, "table1": t1,
+            "percolation": percolation_rows(ens[main]) if main in ens else [],
+            "snapshots": snapshot_rows(jobs), "fields": fields_rows(jobs)}
 
 
 def print_calibrated_thetam(label, by_h, summary):
@@ -848,6 +850,99 @@ def print_calibrated(cal):
     print_sensitivity(cal["sensitivity"])
     print_paper_length(cal["ensembles"], cal["summary"], cal["geometries"])
     print_table1(cal["table1"])
+    print_percolation(cal.get("percolation", []))
+    print_snapshots(cal.get("snapshots", []))
+    print_fields(cal.get("fields", []))
+
+
+def percolation_table(rows):
+    """{H: [(angle, mean largest moving fraction at 0 kHz, packings, at 70
+    kHz, packings)]} from percolation_rows: Fig. 11 in numbers."""
+    out = {}
+    for H in sorted({r[0] for r in rows}):
+        lines = []
+        for theta in sorted({r[3] for r in rows if r[0] == H}):
+            at = [[r[4] for r in rows if r[0] == H and r[3] == theta and r[2] == f] for f in (0.0, 70.0)]
+            lines.append((theta, float(np.mean(at[0])) if at[0] else np.nan, len(at[0]),
+                          float(np.mean(at[1])) if at[1] else np.nan, len(at[1])))
+        out[H] = lines
+    return out
+
+
+def print_percolation(rows):
+    """Fig. 11 in numbers: the largest moving fraction at each angle, mean over the packings."""
+    if not rows:
+        return
+    print("\n### Fig. 11 in numbers: the largest fraction of the observed grains moving at each tested angle "
+          "(mean over the packings tested there)\n")
+    for H, lines in percolation_table(rows).items():
+        cells = ", ".join(f"{theta:g}°: {num(m0, '.3f')} / {num(m70, '.3f')}" for theta, m0, n0, m70, n70 in lines)
+        print(f"- H = {H:g} d (0 / 70 kHz): {cells}")
+
+
+def snapshot_rows(jobs):
+    """Rows (f kHz, U0/d, t ms, snapshot_numbers...) of the snapshot jobs
+    (Figs. 10, 12, 13), sorted by frequency, amplitude and time."""
+    from .avalanche_snapshots import read_snapshots, snapshot_numbers
+    rows = []
+    for job in _jobs(jobs).values():
+        s = job["settings"]
+        if s.get("kind") == "snapshot":
+            for t, snap in read_snapshots(job["dir"], s).items():
+                rows.append((float(s["freq"]) / 1e3, float(s["U0"]), t) + snapshot_numbers(snap))
+    return sorted(rows, key=lambda r: (-r[0], -r[1], r[2]))
+
+
+def print_snapshots(rows):
+    """Figs. 10, 12, 13 in numbers."""
+    if not rows:
+        return
+    print("\n### Figs. 10, 12, 13 in numbers: the network under the drive (14.4 d at 15°, 30 d of the "
+          "layer's middle)\n")
+    print("| f (kHz) | U0/d | t (ms) | contacts | μ*/μ < 0.5: all / within 3 d of the base / above 6 d "
+          "| median \\|q\\|/U0, 0-2, 2-4, 4-6, 6-8 d above the base |")
+    print("|---|---|---|---|---|---|")
+    for f, u, t, n, share, low, high, medians in rows:
+        print(f"| {f:g} | {u:.0e} | {t:g} | {n} | {100 * share:.0f} % / {100 * low:.0f} % / {100 * high:.0f} % "
+              f"| {', '.join(f'{m:.2g}' for m in medians)} |")
+
+
+def _first_below(t, values, limit):
+    below = np.flatnonzero(np.asarray(values) < limit)
+    return float(t[below[0]]) if len(below) else np.nan
+
+
+def fields_rows(jobs):
+    """Rows (H, title, time sigma_2 first below its criterion, sigma_1's,
+    [(t, share of the layer's columns moving faster than a tenth of the
+    mean)]) of the motion below and at theta_m of packing 1 (Figs. 6/9, 14)."""
+    from .avalanche_fields import as_array
+    from .avalanche_study import FIELDS_H
+    rows = []
+    for H in FIELDS_H:
+        for key, (title, f) in sorted(fields_runs(jobs, float(H)).items()):
+            t = np.array(f["sigma_t"])
+            moving = []
+            for snap in f["snapshots"]:
+                columns = as_array(snap["columns"])
+                columns = columns[np.isfinite(columns)]          # a column without a grain says nothing
+                moving.append((snap["t"], float(np.mean(columns / np.mean(columns) > 0.1))))
+            rows.append((float(H), title, _first_below(t, as_array(f["sigma2"]), av.EPS_SIGMA2),
+                         _first_below(t, as_array(f["sigma1"]), av.EPS_SIGMA1), moving))
+    return rows
+
+
+def print_fields(rows):
+    """Figs. 6/9 and 14 in numbers."""
+    if not rows:
+        return
+    print("\n### Figs. 6/9 and 14 in numbers: packing 1 below and at θ_m\n")
+    print(f"| H/d | run | σ_2 < {av.EPS_SIGMA2:g} from (s) | σ_1 < {av.EPS_SIGMA1:g} from (s) "
+          "| columns along the layer faster than 0.1 × the mean, at t (s) |")
+    print("|---|---|---|---|---|")
+    for H, title, t2, t1, moving in rows:
+        print(f"| {H:g} | {title} | {num(t2, '.2f')} | {num(t1, '.2f')} | "
+              f"{', '.join(f'{t:.1f}: {100 * m:.0f} %' for t, m in moving)} |")
 
 
 def study_data(top):

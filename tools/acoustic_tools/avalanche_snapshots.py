@@ -10,6 +10,7 @@ kept in the record as small JSON files, then read back by the figures.
   job_frames        the snapshots of a finished job at its times, from its dumps
   write_snapshots   snapshot_<t>ms.json of a finished job into its record
   read_snapshots    the snapshots of a job (record or production), by time
+  snapshot_numbers  where the friction drops and how the response decays (the tables)
 
 A snapshot holds the grains (id, type, x, y, radius, and qx, qy: U0 q of
 fix acoustic/mindlin, signed, in m) and their contacts (i, j, f_n, k_n,
@@ -118,3 +119,30 @@ def read_snapshots(directory, settings=None):
             snap = _arrays(json.load(handle))
         out[int(round(snap["t_ms"]))] = snap
     return out
+
+
+def snapshot_numbers(snap, bottom=3.0, top=6.0, bands=4, band=2.0):
+    """What a snapshot says in numbers: (contacts between two grains,
+    fraction of them with mu*/mu < 0.5 over the window, among those whose
+    middle lies within `bottom` d of the base's top, and above `top` d;
+    median |q|/U0 of the grains in `bands` bands of `band` d from the
+    base's top up)."""
+    g, c, d = snap["grains"], snap["contacts"], snap["d"]
+    base = g["type"] != 1
+    y_base = g["y"][base].max() if base.any() else g["y"].min()
+    row = {int(t): k for k, t in enumerate(g["id"])}
+    pairs = [k for k, (i, j) in enumerate(zip(c["i"], c["j"])) if int(i) in row and int(j) in row]
+    height = np.array([0.5 * (g["y"][row[int(c["i"][k])]] + g["y"][row[int(c["j"][k])]]) for k in pairs]) - y_base
+    reduced = np.asarray(c["mu_ratio"])[pairs] < 0.5
+    height = height / d
+
+    def share(mask):
+        return float(np.mean(reduced[mask])) if mask.any() else float("nan")
+
+    q = np.hypot(g["qx"], g["qy"]) / snap["U0"]
+    h = (g["y"] - y_base) / d
+    medians = []
+    for k in range(bands):
+        inside = (~base) & (h >= k * band) & (h < (k + 1) * band)
+        medians.append(float(np.median(q[inside])) if inside.any() else float("nan"))
+    return len(pairs), share(np.ones(len(pairs), bool)), share(height < bottom), share(height > top), medians

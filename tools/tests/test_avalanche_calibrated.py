@@ -300,3 +300,15 @@ def test_fig3_from_a_kept_band_calibration(collect, tmp_path):
     assert [os.path.basename(w) for w in written] == ["fig3_modes_free400_H14.4_s4.png"]
     import matplotlib.image
     assert matplotlib.image.imread(written[0]).shape[1] >= 1200
+
+
+def test_fig11_in_numbers(collect, thickness):
+    cal = collect.calibrated_study(str(thickness))
+    table = collect.percolation_table(cal["percolation"])
+    assert sorted(table) == [3.0, 6.0]
+    # H = 3 d: at 16.5 deg only packing 2's 70 kHz ramp (uniform at 17.5) was tested; at 19 deg the 0 kHz
+    # ramps of packings 1 and 3 (uniform at 20 and 19.5)
+    at = {theta: (n0, n70) for theta, m0, n0, m70, n70 in table[3.0]}
+    assert at[16.5] == (0, 1) and at[19.0] == (2, 0)
+    markdown = collect.tables_markdown(collect.study_data(str(thickness)))
+    assert "### Fig. 11 in numbers" in markdown and "- H = 3 d (0 / 70 kHz): 14°: — / 0.000" in markdown

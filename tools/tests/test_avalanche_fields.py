@@ -136,6 +136,12 @@ def test_the_record_keeps_the_fields_of_a_calibrated_ramp(tmp_path):
     runs = avalanche_collect.fields_runs(str(record), 6.0)
     assert sorted(runs) == [(70, "at"), (70, "below")]
     assert runs[(70, "below")][0] == "70 kHz, θ = 10° (θ_m − 0.5°)"
+    rows = avalanche_collect.fields_rows(str(record))
+    assert [(r[0], r[1]) for r in rows] == [(6.0, "70 kHz, θ = 10.5° (θ_m, until uniform)"),
+                                          (6.0, "70 kHz, θ = 10° (θ_m − 0.5°)")]
+    # sigma_1 = 0.5 and sigma_2 = 1.0 throughout: never below their criteria; all the grains move alike
+    assert all(np.isnan(r[2]) and np.isnan(r[3]) for r in rows)
+    assert all(m == 1.0 for _, m in rows[1][4])
     written = avalanche_collect.fields_figures(str(record), str(tmp_path / "figures"))
     assert [os.path.basename(p) for p in written] == ["fig6_9_fields_H6.png", "fig14_front_H6.png"]
     with open(record / a.job_name(s) / "fields.json") as handle:

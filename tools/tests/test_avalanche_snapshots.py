@@ -185,3 +185,31 @@ def test_figures_of_the_snapshots_that_are_there(tmp_path):
     written = avalanche_collect.snapshot_figures(str(tmp_path / "record"), str(tmp_path / "figures"))
     assert [os.path.basename(p) for p in written] == ["fig12_snapshot_30kHz.png"]
     assert matplotlib.image.imread(written[0]).shape[1] >= 1200
+
+
+def test_snapshot_numbers():
+    # a base grain, grains at 1, 2.5 and 7 d above it; three contacts
+    # between grains (middles at 1.75, 4.75 and 4 d) and one with the wall
+    snap = {"d": D, "U0": 1e-8,
+            "grains": {"id": np.array([1, 2, 3, 4]), "type": np.array([2, 1, 1, 1]),
+                       "y": np.array([0.0, 1.0, 2.5, 7.0]) * D, "qx": np.array([0.0, 0.0, 3e-10, 0.0]),
+                       "qy": np.array([0.0, 1e-8, 4e-10, 1e-11])},
+            "contacts": {"i": np.array([2, 3, 2, 2]), "j": np.array([3, 4, 4, 0]),
+                         "mu_ratio": np.array([0.2, 0.9, 0.4, 0.1])}}
+    n, share, low, high, medians = snaps.snapshot_numbers(snap, bottom=3.0, top=4.5, bands=4)
+    assert n == 3
+    assert share == pytest.approx(2 / 3) and low == 1.0 and high == 0.0
+    assert medians[0] == pytest.approx(1.0) and medians[1] == pytest.approx(0.05)
+    assert np.isnan(medians[2]) and medians[3] == pytest.approx(1e-3)
+
+
+def test_snapshot_rows_of_the_record(tmp_path):
+    rng = np.random.default_rng(6)
+    s, directory = _job(tmp_path, freq=30e3, times=(1, 2))
+    _write_dumps(directory, s["tag"], (0, 200, 400), rng)
+    a.record(str(tmp_path / "out"), str(tmp_path / "record"))
+    rows = avalanche_collect.snapshot_rows(str(tmp_path / "record"))
+    assert [r[:3] for r in rows] == [(30.0, 1e-5, 1), (30.0, 1e-5, 2)]
+    from_dumps = avalanche_collect.snapshot_rows(str(tmp_path / "out"))
+    assert [r[:6] for r in from_dumps] == [r[:6] for r in rows]
+    np.testing.assert_equal([r[6:] for r in from_dumps], [r[6:] for r in rows])
