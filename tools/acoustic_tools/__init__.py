@@ -14,6 +14,8 @@ Avalanches on an inclined plane (paper 000, examples/avalanche)
                          the command line of examples/avalanche/study.py
   avalanche_collect      the jobs' JSON into tables and figures
   avalanche_calibration  the calibration scan through LAMMPS's Python module
+  avalanche_snapshots    the network under the drive at paper 000's times (Figs. 10, 12, 13)
+  avalanche_fields       the motion at an angle, reduced for the record (Figs. 6/9, 14)
 
 Sound in confined packings (paper 003, examples/sound)
   sound                  the coherent peak, speeds, exponents, Table I statics
