@@ -1108,12 +1108,12 @@ def draw_figures(data, figdir):
         figs.fig_thetam(out("fig7_thetam.png"), data["thetam"], label, data["thetam_free"], data["free"], couplings,
                         dpi=100, coupling=coupling)
     if cal is not None and cal["tcon"]:
-        figs.fig_tcon(out("fig8_tcon.png"), cal["tcon"] + data["paper_tcon"], dpi=100, coupling=CALIBRATED_LABEL)
+        figs.fig_tcon(out("fig8_tcon.png"), cal["tcon"] + data["paper_tcon"], dpi=125, coupling=CALIBRATED_LABEL)
         if data["tcon"]:
             figs.fig_tcon(out(f"fig8_tcon_k{SET_KAPPA:g}.png"), data["tcon"] + data["paper_tcon"], dpi=100,
                           coupling=BEFORE_LABEL)
     elif label is not None:
-        figs.fig_tcon(out("fig8_tcon.png"), data["tcon"] + data["paper_tcon"], dpi=100, coupling=coupling)
+        figs.fig_tcon(out("fig8_tcon.png"), data["tcon"] + data["paper_tcon"], dpi=125, coupling=coupling)
     if cal is not None and cal["label"] is not None:
         rows = percolation_rows(cal["ensembles"][cal["label"]])
         if rows:
@@ -1152,7 +1152,7 @@ def draw_figures(data, figdir):
                            figs.sigma_runs(held, [PAPER_TCON_ANGLE_H6] * len(held)), dpi=80)
     for name, rows in data["kappa_tables"].items():
         figs.fig_kappa(out("kappa_shift" + name[len("kappa"):] + ".png"),
-                       [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in rows], dpi=80)
+                       [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in rows], dpi=270)
     if cal is not None and cal["kappa_table"]:
         figs.fig_kappa(out("kappa_shift_calibrated.png"),
                        [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in cal["kappa_table"]], dpi=270)
