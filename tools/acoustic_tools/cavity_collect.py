@@ -5,6 +5,7 @@ parameters, wall_seconds) and the recordings TAG.wall.txt, TAG.contacts,
 TAG.flow, TAG.us.txt) into the tables and figures of its RESULTS.md
 (acoustic_tools.cavity_study is the command line).
 
+  record, recorded_run              a run without its recordings (row.json)
   analyse, read_runs, block_error   the measurements of each run (cavity):
                                     F/(PLd), ell/L, <Delta t_c> in s and in
                                     d/U, the zero records per scale, Eq. 7
@@ -179,15 +180,69 @@ def local_rheology(path, p, h):
             "stress": (sxx, syy, sxy), "rate": (Dxx, Dyy, Dxy)}
 
 
+ROW, REGION = "row.json", "region.json"      # what the record keeps of a run besides job.json, result.json
+
+
+def record_run(run, settings, result, dest):
+    """A finished run as the record keeps it, without its recordings (tens
+    of MB at H/d = 30): dest/job.json, result.json, row.json (analyse's
+    row: every number of the tables) and, with a stress field,
+    region.json (the (I, mu) points of Fig. 19's region, for Eq. 20)."""
+    row, data = analyse(run, settings, result)
+    study.write_job(dest, settings)
+    study.write_result(dest, result)
+    with open(os.path.join(dest, ROW), "w") as handle:
+        json.dump(row, handle, indent=1, default=float)
+        handle.write("\n")
+    if data.get("rheology"):
+        I, mu = data["rheology"]["region"]
+        with open(os.path.join(dest, REGION), "w") as handle:
+            json.dump({"I": [float(v) for v in I], "mu": [float(v) for v in mu]}, handle)
+            handle.write("\n")
+
+
+def record(top, dest):
+    """record_run of every finished run of top into dest/<set>/<name>/;
+    returns the number of runs written"""
+    written = 0
+    for set_name in sorted(os.listdir(top)) if os.path.isdir(top) else []:
+        for run, settings, result in study.finished_jobs(os.path.join(top, set_name)):
+            if settings.get("kind") == "cavity" and os.path.exists(os.path.join(run, f"{settings.get('tag', 'cavity')}"
+                                                                                        ".wall.txt")):
+                record_run(run, settings, result, os.path.join(dest, set_name, os.path.basename(run)))
+                written += 1
+    return written
+
+
+def recorded_run(run):
+    """(row, data) of a recorded run (record_run): the row as analyse gave
+    it; of the data only the rheology's region (no recordings: no figure
+    but Eq. 20 draws from it)"""
+    with open(os.path.join(run, ROW)) as handle:
+        row = json.load(handle)
+    data = {"rheology": None, "recorded": True}
+    if os.path.exists(os.path.join(run, REGION)):
+        with open(os.path.join(run, REGION)) as handle:
+            region = json.load(handle)
+        data["rheology"] = {"region": (np.array(region["I"], float), np.array(region["mu"], float))}
+    return row, data
+
+
 def read_runs(top):
     """analyse of every finished run of top (its sets' directories
-    top/<set>/, each holding one directory per run): {"<set>/<name>": (row,
-    data)}, the set and the name from each run's job.json"""
+    top/<set>/, each holding one directory per run), or its recorded row
+    where the recordings are not there (a record: recorded_run): {"<set>/<name>":
+    (row, data)}, the set and the name from each run's job.json"""
     runs = {}
     for set_name in sorted(os.listdir(top)) if os.path.isdir(top) else []:
         for run, settings, result in study.finished_jobs(os.path.join(top, set_name)):
-            if settings.get("kind") == "cavity":
+            if settings.get("kind") != "cavity":
+                continue
+            raw = os.path.exists(os.path.join(run, f"{settings.get('tag', 'cavity')}.wall.txt"))
+            if raw or not os.path.exists(os.path.join(run, ROW)):
                 runs[f"{settings['set']}/{settings['name']}"] = analyse(run, settings, result)
+            else:
+                runs[f"{settings['set']}/{settings['name']}"] = recorded_run(run)
     return runs
 
 
@@ -582,7 +637,9 @@ def collect(top):
 
 
 def draw(top, figdir):
-    """What study.py figures does: the figures of the runs of top into figdir"""
+    """What study.py figures does: the figures of the runs of top into
+    figdir (the fits over every run; the figures of the runs whose
+    recordings are there, not of those known from the record alone)"""
     runs = read_runs(top)
     fit, fit30, eq5, mu_fit = _fits(runs)
-    figures(runs, fit, figdir, fit30, eq5, mu_fit)
+    figures({n: v for n, v in runs.items() if not v[1].get("recorded")}, fit, figdir, fit30, eq5, mu_fit)

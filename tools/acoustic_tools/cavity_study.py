@@ -13,6 +13,10 @@
   collect   OUT/summary.json and OUT/tables.md (acoustic_tools.cavity_collect)
   figures   the PNG figures (acoustic_tools.cavity_figures)
   plan      the runs of the sets given, their length and their estimated cost
+  record    job.json, result.json and the numbers of each finished run
+            (row.json, cavity_collect.record) into RECORD/<set>/<name>/,
+            without the recordings: collect --out RECORD makes every table
+            from it, so that finished runs outlive the machine
 
 The sets of issue 43 (paper 004 at H/d = 30, L/H = 5; PAPER_SETS) beside
 those of the H/d = 10 study behind RESULTS.md's first tables (H10_SETS).
@@ -478,6 +482,11 @@ def figures(args):
     cavity_collect.draw(args.out, args.figures)
 
 
+def record_command(args):
+    """study.py record"""
+    print(f"record: {cavity_collect.record(args.out, args.record)} runs of {args.out} written to {args.record}")
+
+
 def plan_command(args):
     """study.py plan"""
     print("\n".join(plan(args.sets, args.rate, args.solve_steps)))
@@ -511,6 +520,11 @@ def main(here, argv=None):
                                  "at its first restart point after them (default 0: no limit)")
         parser.set_defaults(here=here)
 
+    def record_arguments(parser):
+        common(parser)
+        parser.add_argument("--record", default=os.path.join(here, "record"),
+                            help="where the runs go (default: examples/cavity/record, committed)")
+
     def plan_arguments(parser):
         parser.add_argument("sets", nargs="+", choices=sorted(SETS), metavar="SET")
         parser.add_argument("--rate", type=float, default=RATE,
@@ -523,6 +537,9 @@ def main(here, argv=None):
         "collect": (collect, "summary.json and tables.md into OUT, the tables on stdout", common),
         "figures": (figures, "the PNG figures", lambda parser: common(parser, figures_too=True)),
         "plan": (plan_command, "the runs of the sets, their length and estimated cost", plan_arguments),
+        "record": (record_command, "job.json, result.json and each finished run's numbers (row.json) into the "
+                                   "record, without the recordings; collect --out RECORD makes the tables from it",
+                   record_arguments),
     }, argv)
 
 

@@ -211,6 +211,15 @@ def test_study_run_in_pieces_and_collect(tmp_path, monkeypatch):
     assert row["walls"] == "coulomb" and row["seed"] == 2 and "stationarity" in row and "zeros" in row
     assert row["mu_I_points"] > 0
     cavity_study.main(HERE, ["figures", "--out", str(out), "--figures", str(tmp_path / "figs")])
+    # the record keeps the run's numbers without its recordings, and gives the same tables
+    record = tmp_path / "record"
+    cavity_study.main(HERE, ["record", "--out", str(out), "--record", str(record)])
+    kept = sorted(os.listdir(record / "tiny" / "c1"))
+    assert kept == ["job.json", "region.json", "result.json", "row.json"]
+    cavity_study.main(HERE, ["collect", "--out", str(record)])
+    assert (record / "tables.md").read_text() == (out / "tables.md").read_text()
+    assert json.loads((record / "summary.json").read_text()) == json.loads((out / "summary.json").read_text())
+    cavity_study.main(HERE, ["figures", "--out", str(record), "--figures", str(tmp_path / "figs_record")])
 
 
 def test_ultrasound_from_the_bottom(tmp_path):
