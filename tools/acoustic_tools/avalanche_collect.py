@@ -1274,7 +1274,7 @@ def snapshot_figures(top, figdir):
                   for snap in snaps]
         os.makedirs(figdir, exist_ok=True)
         written.append(os.path.join(figdir, name))
-        figs.fig_snapshots(written[-1], snaps, titles, dpi=100)
+        figs.fig_snapshots(written[-1], snaps, titles, dpi=72)
     return written
 
 
