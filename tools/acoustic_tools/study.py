@@ -104,8 +104,9 @@ def record_jobs(out, dest, files=(JOB, RESULT), summarise=None, select=None):
     """Copy `files` of every finished job under out (that select(name)
     accepts, if given) into dest/<job>/, and, with summarise, write what
     summarise(directory) returns as dest/<job>/log_summary.txt.  A job present
-    in both is written again from out; one recorded earlier and absent from
-    out is kept.  Returns the number of jobs written."""
+    in both is written again from out unless it measured the same
+    (same_measurement: the record then keeps its provenance and wall time);
+    one recorded earlier and absent from out is kept.  Returns the number of jobs written."""
     written = 0
     for directory, _, _ in finished_jobs(out):
         name = os.path.basename(directory)
@@ -114,13 +115,39 @@ def record_jobs(out, dest, files=(JOB, RESULT), summarise=None, select=None):
         target = os.path.join(dest, name)
         os.makedirs(target, exist_ok=True)
         for file in files:
-            if os.path.exists(os.path.join(directory, file)):
-                shutil.copyfile(os.path.join(directory, file), os.path.join(target, file))
+            source, recorded = os.path.join(directory, file), os.path.join(target, file)
+            if os.path.exists(source) and not same_measurement(recorded, source):
+                shutil.copyfile(source, recorded)
         if summarise is not None:
             with open(os.path.join(target, "log_summary.txt"), "w") as f:
                 f.write(summarise(directory))
         written += 1
     return written
+
+
+# what a rerun of a job may change without changing what it measured: where
+# the record first came from, and how long the run took
+BOOKKEEPING = ("recorded_from", "wall_time")
+
+
+def same_measurement(recorded, source):
+    """Whether the JSON file `recorded` (in a record) holds what `source`
+    (the same file of a finished job) holds, apart from BOOKKEEPING.  A job
+    run again (a deposit or ramp rerun for its t_con runs, bit for bit the
+    same) then leaves its record as it was; anything else is False."""
+    if not (recorded.endswith(".json") and os.path.exists(recorded)):
+        return False
+    try:
+        with open(recorded) as old, open(source) as new:
+            old, new = json.load(old), json.load(new)
+    except ValueError:
+        return False
+    if not (isinstance(old, dict) and isinstance(new, dict)):
+        return old == new
+
+    def measured(values):
+        return {key: value for key, value in values.items() if key not in BOOKKEEPING}
+    return measured(old) == measured(new)
 
 
 def lammps_variables(settings, names):

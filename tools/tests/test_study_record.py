@@ -44,3 +44,20 @@ def test_sound_record_keeps_the_samples_and_their_summary(tmp_path):
     summary = (dest / "p1e-4_H25_s3" / "log_summary.txt").read_text().splitlines()
     assert summary == ["packing: 618 grains", "checks: phi2 0.82", "packing_steps 575000", "pulse: t_tof 12",
                        "moduli: C11 0.005"]
+
+
+def test_a_job_run_again_keeps_its_record_when_it_measured_the_same(tmp_path):
+    out, dest = tmp_path / "out", tmp_path / "record"
+    make_job(out, "deposit")
+    study.record_jobs(str(out), str(dest))
+    recorded = dest / "deposit"
+    study.write_job(str(recorded), {"name": "deposit", "recorded_from": "ensemble/log.deposit"})
+    (recorded / study.RESULT).write_text('{"value": 1.5, "wall_time": 9}\n')
+    study.write_result(str(out / "deposit"), {"value": 1.5, "wall_time": 12})      # the rerun: same grains
+    study.record_jobs(str(out), str(dest))
+    assert json.loads((recorded / study.JOB).read_text())["recorded_from"] == "ensemble/log.deposit"
+    assert json.loads((recorded / study.RESULT).read_text())["wall_time"] == 9
+    study.write_result(str(out / "deposit"), {"value": 1.6, "wall_time": 12})      # measured otherwise
+    study.record_jobs(str(out), str(dest))
+    assert json.loads((recorded / study.RESULT).read_text()) == {"value": 1.6, "wall_time": 12}
+    assert "recorded_from" in json.loads((recorded / study.JOB).read_text())     # its settings did not change
