@@ -259,8 +259,8 @@ def mobilisation(normal_force, tangential_force, mu, limit=COULOMB_LIMIT):
     (mu F_n) of every contact that carries a normal force; the fraction at
     the Coulomb limit (m >= limit: LAMMPS's Mindlin model scales F_t back
     onto mu F_n, so a sliding contact has m = 1 to rounding), the fraction
-    with m >= 0.9, the mean of m, and at_limit, the mask of the contacts at
-    the limit in the order given"""
+    with m >= 0.9, the mean of m, at_limit, the mask of the contacts at
+    the limit, and m itself, in the order given"""
     normal_force = np.asarray(normal_force, dtype=float)
     tangential_force = np.asarray(tangential_force, dtype=float)
     if mu <= 0.0:
@@ -271,7 +271,7 @@ def mobilisation(normal_force, tangential_force, mu, limit=COULOMB_LIMIT):
     at_limit = loaded & (m >= limit)
     count = max(int(loaded.sum()), 1)
     return {"fraction_at_limit": float(at_limit.sum() / count), "fraction_above_0.9": float((m[loaded] >= 0.9).sum() / count),
-            "mean": float(m[loaded].mean()) if loaded.any() else 0.0, "at_limit": at_limit}
+            "mean": float(m[loaded].mean()) if loaded.any() else 0.0, "at_limit": at_limit, "m": m}
 
 
 def linear_response(moduli, tolerance=0.25, keys=("C11", "C22", "C33")):

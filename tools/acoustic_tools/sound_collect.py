@@ -229,6 +229,32 @@ def contact_mobilisation(tangential, grains, contacts, summary, mu=DEFAULT_MU):
                         for i, j in zip(contacts[0], contacts[1])])
         slipping = network_moduli.network_moduli(grains, contacts, summary["W"], summary["h"], eta=eta)
         out.update({f"{key}_slipping": value for key, value in slipping.items()})
+        out.update(c33_without_mobilised(found["m"], tangential, grains, contacts, summary))
+    return out
+
+
+# the mobilisations m = |F_t| / (mu F_n) above which c33_without_mobilised
+# removes the tangential springs
+MOBILISATION_THRESHOLDS = (0.8, 0.6)
+
+
+def c33_without_mobilised(m, tangential, grains, contacts, summary, thresholds=MOBILISATION_THRESHOLDS):
+    """How much of C33 hangs on the most mobilised contacts: for each
+    threshold, the share of the grain-grain contacts with m >= threshold
+    (m: sound.mobilisation's, in the order of tangential's rows) and the
+    network's C33 with their tangential springs removed, as if they all
+    slid; keys mobilised_<threshold>, C33_without_<threshold>"""
+    by_pair = {tuple(sorted((int(i), int(j)))): value for i, j, value in zip(tangential[0], tangential[1], m)}
+    grain_contact = contacts[1].astype(int) != 0
+    mobilisation = np.array([by_pair.get(tuple(sorted((int(i), int(j)))), 0.0)
+                             for i, j in zip(contacts[0], contacts[1])])
+    out = {}
+    for threshold in thresholds:
+        removed = grain_contact & (mobilisation >= threshold)
+        network = network_moduli.network_moduli(grains, contacts, summary["W"], summary["h"],
+                                                 eta=np.where(removed, 0.0, 1.0))
+        out[f"mobilised_{threshold:g}"] = float(removed.sum() / max(int(grain_contact.sum()), 1))
+        out[f"C33_without_{threshold:g}"] = network["C33"]
     return out
 
 
@@ -629,7 +655,8 @@ def c33_and_sliding(out, per_sample, pressures, height=25):
     seed by seed with the default ones: C33 at that strain over C33 at the
     default strain, mean and standard error); {p: {"packings",
     "mobilised", "mobilised_0.9", "mobilisation_mean", "C33_network",
-    "C33_slipping", "C22_slipping_over_network", "paper",
+    "C33_slipping", "C22_slipping_over_network", "mobilised_<t>",
+    "C33_without_<t>" (c33_without_mobilised, t in MOBILISATION_THRESHOLDS), "paper",
     "strains": {strain: {"pairs", "ratio", "C33"}}}} (means and standard
     errors), the pressures without either left out"""
     strained = {e: samples(out, moduli_strain=e) for e in moduli_strains(out)}
@@ -651,8 +678,10 @@ def c33_and_sliding(out, per_sample, pressures, height=25):
         entry = {"packings": len(sliding), "paper": PAPER_C33.get(p), "strains": {}}
         if sliding:
             rows = list(sliding.values())
-            for key in ("mobilised", "mobilised_0.9", "mobilisation_mean", "C33_network", "C33_slipping"):
-                entry[key] = mean_standard_error([r[key] for r in rows])
+            for key in ("mobilised", "mobilised_0.9", "mobilisation_mean", "C33_network", "C33_slipping") + tuple(
+                    f"{name}_{t:g}" for t in MOBILISATION_THRESHOLDS for name in ("mobilised", "C33_without")):
+                if all(key in r for r in rows):
+                    entry[key] = mean_standard_error([r[key] for r in rows])
             entry["C22_slipping_over_network"] = mean_standard_error([r["C22_slipping"] / r["C22_network"]
                                                                       for r in rows])
         for e, found in strained.items():
@@ -677,11 +706,14 @@ def c33_sliding_table(sliding):
     strains = sorted({float(e) for c in sliding.values() for e in c["strains"]})
     lines = _table_head(["C33 and sliding at the contacts (H = 25 packings; mean ± standard error): the grain-grain contacts",
                          "at the Coulomb limit |F_t| = mu F_n (and above 0.9 mu F_n), the network's C33 with and without",
-                         "their tangential springs, over Table II's; the DEM's C33 measured at other strains on the same",
+                         "their tangential springs, over Table II's; the same without the tangential springs of every",
+                         "contact mobilised to m = |F_t|/(mu F_n) ≥ 0.8 or 0.6; the DEM's C33 measured at other strains on the same",
                          f"packings over C33 at the default strain ({DEFAULT_MODULI_STRAIN:g} of the overlap (3 p)^(2/3), "
                          "over h), and over Table II's"],
                         ["p", "packings", "at the limit", "above 0.9", "mean |F_t|/(mu F_n)", "C33 network / paper",
                          "C33 limit contacts slipping / paper", "C22 slipping / network"]
+                        + [f"m ≥ {t:g}: share; C33 without their tangential springs / paper"
+                           for t in MOBILISATION_THRESHOLDS]
                         + [f"C33(strain {e:g}) / C33 (pairs)" for e in strains]
                         + [f"C33(strain {e:g}) / paper" for e in strains])
     for p, c in sliding.items():
@@ -694,6 +726,9 @@ def c33_sliding_table(sliding):
                       _se_cell(c["C22_slipping_over_network"])]
         else:
             cells += ["-"] * 6
+        for t in MOBILISATION_THRESHOLDS:
+            share, without = c.get(f"mobilised_{t:g}"), c.get(f"C33_without_{t:g}")
+            cells.append(f"{_se_cell(share)}; {without[0] / paper:.2f}" if share and without and paper else "-")
         for e in strains:
             found = c["strains"].get(e) or c["strains"].get(f"{e:g}") or c["strains"].get(str(e))
             cells.append(f"{_se_cell(found['ratio'])} ({found['pairs']})" if found else "-")

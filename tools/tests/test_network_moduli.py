@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from acoustic_tools import network_moduli
+from acoustic_tools import network_moduli, sound
 
 
 def packing(ids, x, y, bonds, wall_contacts, k, k_wall):
@@ -140,3 +140,28 @@ def test_contacts_at_the_coulomb_limit_lose_their_tangential_spring():
     sticking = sound_collect.contact_mobilisation(tangential, grains, contacts, summary, mu=0.5)
     assert sticking["mobilised"] == 0.0 and sticking["mobilised_0.9"] == 0.0
     assert sticking["C33_slipping"] == full["C33"] and sticking["C22_slipping"] == full["C22"]
+
+
+def test_c33_without_the_most_mobilised_contacts():
+    # the lattice's grain-grain contacts at m = 0.8 (|F_t| = 0.4 F_n, mu 0.5):
+    # at the threshold 0.8 all of them lose their tangential springs (the
+    # network of contacts at the Coulomb limit: no shear modulus), at 0.6
+    # too; at m = 0.7 only the threshold 0.6 removes them, and 0.8 keeps
+    # the whole network bit for bit; the shares count grain-grain contacts
+    from acoustic_tools import sound_collect
+    k = 2.0
+    (grains, contacts), width, height, span = triangular_lattice(4, 30, k, 1e9 * k)
+    bulk = contacts[1] != 0
+    normal_force = np.full(int(bulk.sum()), 2.0)
+    tangential = {0: contacts[0][bulk], 1: contacts[1][bulk], 2: normal_force, 3: 0.4 * normal_force}
+    summary = {"W": width, "h": height}
+    full = network_moduli.network_moduli(grains, contacts, width, height)
+    m = sound.mobilisation(tangential[2], tangential[3], 0.5)["m"]
+    found = sound_collect.c33_without_mobilised(m, tangential, grains, contacts, summary)
+    assert found["mobilised_0.8"] == 1.0 and found["mobilised_0.6"] == 1.0
+    assert abs(found["C33_without_0.8"]) < 1e-4 * full["C33"]
+    tangential[3] = 0.35 * normal_force
+    m = sound.mobilisation(tangential[2], tangential[3], 0.5)["m"]
+    found = sound_collect.c33_without_mobilised(m, tangential, grains, contacts, summary)
+    assert found["mobilised_0.8"] == 0.0 and found["C33_without_0.8"] == full["C33"]
+    assert found["mobilised_0.6"] == 1.0 and abs(found["C33_without_0.6"]) < 1e-4 * full["C33"]
