@@ -1152,10 +1152,10 @@ def draw_figures(data, figdir):
                            figs.sigma_runs(held, [PAPER_TCON_ANGLE_H6] * len(held)), dpi=80)
     for name, rows in data["kappa_tables"].items():
         figs.fig_kappa(out("kappa_shift" + name[len("kappa"):] + ".png"),
-                       [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in rows], dpi=270)
+                       [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in rows], dpi=200)
     if cal is not None and cal["kappa_table"]:
         figs.fig_kappa(out("kappa_shift_calibrated.png"),
-                       [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in cal["kappa_table"]], dpi=270)
+                       [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in cal["kappa_table"]], dpi=200)
     return written
 
 

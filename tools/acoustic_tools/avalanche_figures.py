@@ -187,7 +187,7 @@ def fig_kappa(path, rows, dpi=110):
     shift of about 2 deg as a band."""
     t = np.array([row[:5] for row in rows], float)
     geometry = np.array([row[5] for row in rows])
-    fig, ax = plt.subplots(figsize=(4.5, 3.4))
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
     ax.axhspan(1.5, 2.5, color="0.85", label="paper 000: ≈ 2°")
     ax.axhline(0, color="0.5", lw=0.6)
     groups = sorted({(g, H) for g, H in zip(geometry, t[:, 1])}, key=lambda x: (x[1], x[0]))
@@ -205,7 +205,7 @@ def fig_kappa(path, rows, dpi=110):
     ax.set_xticks(np.unique(t[:, 0]))
     ax.set_xlabel("kappa_scale")
     ax.set_ylabel(r"$\theta_m$(0 kHz) $-$ $\theta_m$(70 kHz) (°)")
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=8)
     fig.tight_layout()
     return _save(fig, path, dpi)
 
