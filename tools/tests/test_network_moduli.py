@@ -118,6 +118,17 @@ def test_normal_model_is_the_frictionless_network():
         network_moduli.network_moduli(grains, contacts, width, height, model="tangential")
 
 
+def lattice_with_tangential_forces(k, ratio):
+    """the triangular lattice of springs k between walls, and a
+    tangential.dump of its grain-grain contacts with F_n = 2 and |F_t| =
+    ratio F_n: grains, contacts, span, tangential, summary (W, h)"""
+    (grains, contacts), width, height, span = triangular_lattice(4, 30, k, 1e9 * k)
+    bulk = contacts[1] != 0
+    normal_force = np.full(int(bulk.sum()), 2.0)
+    tangential = {0: contacts[0][bulk], 1: contacts[1][bulk], 2: normal_force, 3: ratio * normal_force}
+    return grains, contacts, span, tangential, {"W": width, "h": height}
+
+
 def test_contacts_at_the_coulomb_limit_lose_their_tangential_spring():
     # every grain-grain contact of the lattice at the Coulomb limit: central
     # springs in the bulk, C22 = (3 sqrt(3) / 4) k (the closed form at eta =
@@ -126,11 +137,8 @@ def test_contacts_at_the_coulomb_limit_lose_their_tangential_spring():
     # at the limit, the network is the whole one, bit for bit
     from acoustic_tools import sound_collect
     k = 2.0
-    (grains, contacts), width, height, span = triangular_lattice(4, 30, k, 1e9 * k)
-    bulk = contacts[1] != 0
-    normal_force = np.full(int(bulk.sum()), 2.0)
-    tangential = {0: contacts[0][bulk], 1: contacts[1][bulk], 2: normal_force, 3: 0.5 * normal_force}
-    summary = {"W": width, "h": height}
+    grains, contacts, span, tangential, summary = lattice_with_tangential_forces(k, 0.5)
+    width, height, normal_force = summary["W"], summary["h"], tangential[2]
     sliding = sound_collect.contact_mobilisation(tangential, grains, contacts, summary, mu=0.5)
     assert sliding["mobilised"] == 1.0 and sliding["mobilisation_mean"] == pytest.approx(1.0)
     assert sliding["C22_slipping"] * span / height == pytest.approx(3.0 * math.sqrt(3.0) / 4.0 * k, rel=1e-5)
@@ -149,12 +157,8 @@ def test_c33_without_the_most_mobilised_contacts():
     # too; at m = 0.7 only the threshold 0.6 removes them, and 0.8 keeps
     # the whole network bit for bit; the shares count grain-grain contacts
     from acoustic_tools import sound_collect
-    k = 2.0
-    (grains, contacts), width, height, span = triangular_lattice(4, 30, k, 1e9 * k)
-    bulk = contacts[1] != 0
-    normal_force = np.full(int(bulk.sum()), 2.0)
-    tangential = {0: contacts[0][bulk], 1: contacts[1][bulk], 2: normal_force, 3: 0.4 * normal_force}
-    summary = {"W": width, "h": height}
+    grains, contacts, _, tangential, summary = lattice_with_tangential_forces(2.0, 0.4)
+    width, height, normal_force = summary["W"], summary["h"], tangential[2]
     full = network_moduli.network_moduli(grains, contacts, width, height)
     m = sound.mobilisation(tangential[2], tangential[3], 0.5)["m"]
     found = sound_collect.c33_without_mobilised(m, tangential, grains, contacts, summary)
