@@ -305,6 +305,16 @@ def fig_chains(path, atoms, c, dpi=110):
     return _save(fig, path, dpi)
 
 
+def _ramp_count(count):
+    """'4 packings' when every frequency has the same number of ramps,
+    else '4 packings at 0 kHz, 2 at 70 kHz' (count: frequency name -> ramps)."""
+    numbers = [n for n in count.values() if n]
+    if len(set(numbers)) == 1:
+        return f"{numbers[0]} packing{'s' if numbers[0] != 1 else ''}"
+    parts = [f"{n} at {name}" for name, n in count.items() if n]
+    return parts[0].replace(" at", " packings at", 1) + ", " + ", ".join(parts[1:])
+
+
 def fig_percolation(path, rows, coupling="", dpi=110):
     """Paper 000's Fig. 11: how far the moving zones spread at each slope,
     with and without ultrasound: the largest fraction of the observed grains
@@ -318,20 +328,24 @@ def fig_percolation(path, rows, coupling="", dpi=110):
         for ax, H in zip(axes[0], heights):
             mine = [r for r in rows if r[0] == H]
             packings = sorted({r[1] for r in mine}, key=int)
+            count = {}
             for f, marker, name in ((0.0, "o", "0 kHz"), (70.0, "s", "70 kHz")):
-                for k, seed in enumerate(packings):
+                drawn = 0
+                for seed in packings:
                     line = sorted((r[3], r[4], r[5]) for r in mine if r[1] == seed and r[2] == f)
                     if not line:
                         continue
                     theta, frac, state = zip(*line)
                     ax.plot(theta, frac, marker=marker, ms=5, lw=1.2, color=COLOUR[int(f)], alpha=0.85,
-                            label=name if k == 0 else None)
+                            label=name if drawn == 0 else None)
+                    drawn += 1
                     for t, v, st in line:
                         if st == "uniform":
                             ax.plot(t, v, "*", ms=15, color=COLOUR[int(f)], mec="k", mew=0.6)
+                count[name] = drawn
             ax.set_ylim(0, 1.02)
             ax.set_xlabel(r"slope angle $\theta$ (°)")
-            ax.set_title(f"H = {H:g} d ({len(packings)} packings)")
+            ax.set_title(f"H = {H:g} d ({_ramp_count(count)})")
             ax.grid(alpha=0.3)
         axes[0][0].set_ylabel("largest fraction of grains moving at the angle")
         axes[0][0].plot([], [], "*", ms=13, color="0.5", mec="k", label=r"uniform flow ($\theta_m$)")

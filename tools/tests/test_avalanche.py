@@ -482,3 +482,18 @@ def test_fig8_stars_at_theta_m_squares_above(tmp_path):
     assert orange.get_color() == figs.COLOUR[70]
     assert six["paper 000, 0 kHz: 1.15 s at 19° (stated in its text)"].get_ydata().tolist() == [1.15]
     assert not any(name.startswith("paper") for name in (line.get_label() for line in fig.axes[1].get_lines()))
+
+
+def test_fig11_counts_the_ramps_of_each_frequency(tmp_path):
+    """Fig. 11's panel titles count the ramps at each frequency (a panel
+    whose 70 kHz ramps are not all run says so), and each frequency is in
+    the legend once, even when the first packing has no ramp at it."""
+    from acoustic_tools import avalanche_figures as figs
+    rows = [(8.7, "1", 0.0, 15.0, 0.2, "spreading"), (8.7, "1", 0.0, 17.5, 0.9, "uniform"),
+            (8.7, "2", 0.0, 16.0, 0.8, "uniform"), (8.7, "2", 70.0, 14.5, 0.9, "uniform"),
+            (14.4, "1", 0.0, 16.0, 1.0, "uniform"), (14.4, "1", 70.0, 15.0, 1.0, "uniform")]
+    fig = figs.fig_percolation(tmp_path / "fig11.png", rows, dpi=40)
+    assert [ax.get_title() for ax in fig.axes] == ["H = 8.7 d (2 packings at 0 kHz, 1 at 70 kHz)",
+                                                   "H = 14.4 d (1 packing)"]
+    handles, labels = fig.axes[0].get_legend_handles_labels()
+    assert labels.count("0 kHz") == 1 and labels.count("70 kHz") == 1
