@@ -233,7 +233,8 @@ def fig_tcon(path, rows, dpi=110, coupling=None):
     heights = sorted({_tcon_label(r[0])[0] for r in rows})
     at = f", {coupling}" if coupling else ""
     with plt.rc_context(READABLE):
-        fig, axes = plt.subplots(1, len(heights), figsize=(5.2 * len(heights), 8.0), sharey=True, squeeze=False)
+        # at least as wide as the two-column legend below the panels
+        fig, axes = plt.subplots(1, len(heights), figsize=(max(5.2 * len(heights), 12.5), 8.0), sharey=True, squeeze=False)
         for ax, H in zip(axes[0], heights):
             for frequency in (0.0, 70.0):
                 c = COLOUR[int(frequency)]

@@ -270,11 +270,16 @@ def record(args):
     """study.py record: the finished samples of OUT into RECORD (job.json,
     result.json, log_summary.txt), then the tables of OUT (collect: they
     need the samples' signals, which the record does not keep) into
-    RECORD/tables.md"""
+    RECORD/tables.md, or RECORD/<args.tables> when OUT holds only part of
+    the study (the full study's tables.md then stays as it is)"""
+    name = getattr(args, "tables", None) or "tables.md"
+    if os.path.basename(name) != name or not name.endswith(".md"):
+        raise SystemExit(f"study.py record: --tables {name}: give a file name ending in .md, no directory")
     written = study.record_jobs(args.out, args.record, summarise=log_summary, select=is_sample)
     print(f"record: {written} samples from {args.out} written to {args.record}")
     sound_collect.collect(args.out)
-    shutil.copyfile(os.path.join(args.out, "tables.md"), os.path.join(args.record, "tables.md"))
+    shutil.copyfile(os.path.join(args.out, "tables.md"), os.path.join(args.record, name))
+    print(f"record: the tables of {args.out} in {os.path.join(args.record, name)}")
 
 
 def figures(args):
@@ -478,6 +483,9 @@ def main(here, argv=None):
         common(parser)
         parser.add_argument("--record", default=os.path.join(here, "record"),
                             help="the record of the study in git (default: examples/sound/record)")
+        parser.add_argument("--tables", default="tables.md",
+                            help="the file of RECORD that takes OUT's tables (default tables.md); another "
+                            "name when OUT holds only part of the study, e.g. tables_H25_seeds1-30.md")
 
     def migrate_arguments(parser):
         common(parser)

@@ -3,6 +3,8 @@ keeps of its finished jobs"""
 import json
 import os
 
+import pytest
+
 from acoustic_tools import sound_study, study
 
 
@@ -61,3 +63,21 @@ def test_a_job_run_again_keeps_its_record_when_it_measured_the_same(tmp_path):
     study.record_jobs(str(out), str(dest))
     assert json.loads((recorded / study.RESULT).read_text()) == {"value": 1.6, "wall_time": 12}
     assert "recorded_from" in json.loads((recorded / study.JOB).read_text())     # its settings did not change
+
+
+def test_sound_record_of_part_of_the_study_keeps_the_full_tables(tmp_path, monkeypatch):
+    """study.py record --tables NAME: the tables of an OUT that holds only
+    part of the study go to RECORD/NAME; the full study's tables.md stays."""
+    from types import SimpleNamespace
+    out, dest = tmp_path / "out", tmp_path / "record"
+    make_job(out, "p1e-4_H25_s3", log="packing: 618 grains\n")
+    dest.mkdir()
+    (dest / "tables.md").write_text("the full study\n")
+    monkeypatch.setattr(sound_study.sound_collect, "collect",
+                        lambda top: (out / "tables.md").write_text("the seeds of out\n"))
+    sound_study.record(SimpleNamespace(out=str(out), record=str(dest), tables="tables_part.md"))
+    assert (dest / "tables.md").read_text() == "the full study\n"
+    assert (dest / "tables_part.md").read_text() == "the seeds of out\n"
+    assert (dest / "p1e-4_H25_s3" / study.RESULT).exists()
+    with pytest.raises(SystemExit, match="no directory"):
+        sound_study.record(SimpleNamespace(out=str(out), record=str(dest), tables="../tables.md"))
