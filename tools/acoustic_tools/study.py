@@ -104,15 +104,19 @@ def record_jobs(out, dest, files=(JOB, RESULT), summarise=None, select=None):
     """Copy `files` of every finished job under out (that select(name)
     accepts, if given) into dest/<job>/, and, with summarise, write what
     summarise(directory) returns as dest/<job>/log_summary.txt.  A job present
-    in both is written again from out unless it measured the same
-    (same_measurement: the record then keeps its provenance and wall time);
-    one recorded earlier and absent from out is kept.  Returns the number of jobs written."""
+    in both whose result measured the same (same_measurement) keeps its
+    record as it was (its provenance, wall time and log summary: a rerun
+    bit for bit the same adds nothing); otherwise each file is written again
+    from out unless it holds the same.  One recorded earlier and absent from
+    out is kept.  Returns the number of jobs written."""
     written = 0
     for directory, _, _ in finished_jobs(out):
         name = os.path.basename(directory)
         if select is not None and not select(name):
             continue
         target = os.path.join(dest, name)
+        if same_measurement(os.path.join(target, RESULT), os.path.join(directory, RESULT)):
+            continue
         os.makedirs(target, exist_ok=True)
         for file in files:
             source, recorded = os.path.join(directory, file), os.path.join(target, file)
@@ -126,8 +130,9 @@ def record_jobs(out, dest, files=(JOB, RESULT), summarise=None, select=None):
 
 
 # what a rerun of a job may change without changing what it measured: where
-# the record first came from, and how long the run took
-BOOKKEEPING = ("recorded_from", "wall_time")
+# the record first came from, and how long the run took (the avalanche study
+# writes wall_time, the sound study wall_seconds)
+BOOKKEEPING = ("recorded_from", "wall_time", "wall_seconds")
 
 
 def same_measurement(recorded, source):

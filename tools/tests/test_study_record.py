@@ -81,3 +81,23 @@ def test_sound_record_of_part_of_the_study_keeps_the_full_tables(tmp_path, monke
     assert (dest / "p1e-4_H25_s3" / study.RESULT).exists()
     with pytest.raises(SystemExit, match="no directory"):
         sound_study.record(SimpleNamespace(out=str(out), record=str(dest), tables="../tables.md"))
+
+
+def test_a_sample_run_again_keeps_its_whole_record(tmp_path):
+    """A sound sample made again bit for bit (its result the same apart from
+    wall_seconds) keeps its recorded job.json, result.json and log summary,
+    even when today's deck writes one more setting and other paths."""
+    out, dest = tmp_path / "out", tmp_path / "record"
+    make_job(out, "p1e-4_H25_s1", log="packing: in /old/path\n")
+    study.record_jobs(str(out), str(dest), summarise=sound_study.log_summary, select=sound_study.is_sample)
+    recorded = dest / "p1e-4_H25_s1"
+    (recorded / study.RESULT).write_text('{"value": 1.5, "wall_seconds": 549}\n')
+    study.write_job(str(out / "p1e-4_H25_s1"), {"name": "p1e-4_H25_s1", "mu": 0.5})
+    study.write_result(str(out / "p1e-4_H25_s1"), {"value": 1.5, "wall_seconds": 114})
+    (out / "p1e-4_H25_s1" / "log.lammps").write_text("packing: in /new/path\n")
+    written = study.record_jobs(str(out), str(dest), summarise=sound_study.log_summary,
+                                select=sound_study.is_sample)
+    assert written == 0
+    assert json.loads((recorded / study.RESULT).read_text())["wall_seconds"] == 549
+    assert "mu" not in json.loads((recorded / study.JOB).read_text())
+    assert (recorded / "log_summary.txt").read_text() == "packing: in /old/path\n"
