@@ -308,11 +308,12 @@ def fig_chains(path, atoms, c, dpi=110):
 
 def _ramp_count(count):
     """'4 packings' when every frequency has the same number of ramps,
-    else '4 packings at 0 kHz, 2 at 70 kHz' (count: frequency name -> ramps)."""
-    numbers = [n for n in count.values() if n]
+    else '4 packings at 0 kHz, 2 at 70 kHz' or '4 packings at 0 kHz, none
+    at 70 kHz' (count: frequency name -> ramps)."""
+    numbers = list(count.values())
     if len(set(numbers)) == 1:
         return f"{numbers[0]} packing{'s' if numbers[0] != 1 else ''}"
-    parts = [f"{n} at {name}" for name, n in count.items() if n]
+    parts = [f"{n or 'none'} at {name}" for name, n in count.items()]
     return parts[0].replace(" at", " packings at", 1) + ", " + ", ".join(parts[1:])
 
 

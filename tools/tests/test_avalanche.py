@@ -491,9 +491,11 @@ def test_fig11_counts_the_ramps_of_each_frequency(tmp_path):
     from acoustic_tools import avalanche_figures as figs
     rows = [(8.7, "1", 0.0, 15.0, 0.2, "spreading"), (8.7, "1", 0.0, 17.5, 0.9, "uniform"),
             (8.7, "2", 0.0, 16.0, 0.8, "uniform"), (8.7, "2", 70.0, 14.5, 0.9, "uniform"),
+            (11.4, "1", 0.0, 16.0, 1.0, "uniform"), (11.4, "2", 0.0, 16.5, 1.0, "uniform"),
             (14.4, "1", 0.0, 16.0, 1.0, "uniform"), (14.4, "1", 70.0, 15.0, 1.0, "uniform")]
     fig = figs.fig_percolation(tmp_path / "fig11.png", rows, dpi=40)
     assert [ax.get_title() for ax in fig.axes] == ["H = 8.7 d (2 packings at 0 kHz, 1 at 70 kHz)",
+                                                   "H = 11.4 d (2 packings at 0 kHz, none at 70 kHz)",
                                                    "H = 14.4 d (1 packing)"]
     handles, labels = fig.axes[0].get_legend_handles_labels()
     assert labels.count("0 kHz") == 1 and labels.count("70 kHz") == 1
