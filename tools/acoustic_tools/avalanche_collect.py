@@ -1143,13 +1143,13 @@ def draw_figures(data, figdir):
                     and os.path.exists(os.path.join(p["dirs"][tag], f"{tag}.series"))]
             if sers:
                 figs.fig_sigma(out(f"fig6_9_sigma_H{H:g}.png"),
-                               figs.sigma_runs([s for s, _ in sers], [th for _, th in sers]), dpi=80)
+                               figs.sigma_runs([s for s, _ in sers], [th for _, th in sers]), dpi=110)
         # the runs with longer holds of the uniform criterion are the sets' before the calibration
         held = held_series(data["ensembles"][label].get(6.0, []) if label is not None else [], "f0",
                            PAPER_TCON_ANGLE_H6)
         if held:
             figs.fig_sigma(out("tcon_hold_sigma_H6.png"),
-                           figs.sigma_runs(held, [PAPER_TCON_ANGLE_H6] * len(held)), dpi=80)
+                           figs.sigma_runs(held, [PAPER_TCON_ANGLE_H6] * len(held)), dpi=110)
     for name, rows in data["kappa_tables"].items():
         figs.fig_kappa(out("kappa_shift" + name[len("kappa"):] + ".png"),
                        [(k, H, shift, mu, onset, g) for k, H, _, shift, mu, onset, g in rows], dpi=200)

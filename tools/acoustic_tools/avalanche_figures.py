@@ -99,22 +99,27 @@ def fig_sigma(path, runs, dpi=110):
     """Figs. 6 / 9: sigma_1 and sigma_2 against the time since the tilt to
     theta, one panel per run (name, series of avalanche.read_series, theta;
     sigma_runs reads them), the last stay at theta of each series."""
-    fig, axes = plt.subplots(1, len(runs), figsize=(4.2 * len(runs), 3.2), squeeze=False)
-    for ax, (name, s, theta) in zip(axes[0], runs):
-        parts = [(t, idx) for th, t, idx in av.angle_samples(s) if abs(th - theta) < 1e-6]
-        if not parts:
-            raise ValueError(f"{name}: no samples at theta = {theta}")
-        t, idx = parts[-1]
-        ax.semilogy(t, s["sigma1"][idx], color="tab:blue", label=r"$\sigma_1$ (top)")
-        ax.semilogy(t, s["sigma2"][idx], color="tab:red", label=r"$\sigma_2$ (bottom)")
-        ax.axhline(av.EPS_SIGMA1, color="tab:blue", ls="--", lw=1)
-        ax.axhline(av.EPS_SIGMA2, color="tab:red", ls="-", lw=1)
-        ax.set_ylim(0.05, 100)
-        ax.set_xlabel("time since the tilt (s)")
-        ax.set_ylabel(r"$\sigma_l$")
-        ax.set_title(f"{name}: $\\theta$ = {theta:g}°", fontsize=9)
-        ax.legend(fontsize=8)
-    fig.tight_layout()
+    ncols = int(np.ceil(np.sqrt(len(runs))))
+    nrows = int(np.ceil(len(runs) / ncols))
+    with plt.rc_context(READABLE):
+        fig, axes = plt.subplots(nrows, ncols, figsize=(5.6 * ncols, 4.2 * nrows), squeeze=False)
+        for ax in axes.flat[len(runs):]:
+            ax.set_visible(False)
+        for ax, (name, s, theta) in zip(axes.flat, runs):
+            parts = [(t, idx) for th, t, idx in av.angle_samples(s) if abs(th - theta) < 1e-6]
+            if not parts:
+                raise ValueError(f"{name}: no samples at theta = {theta}")
+            t, idx = parts[-1]
+            ax.semilogy(t, s["sigma1"][idx], color="tab:blue", label=r"$\sigma_1$ (top)")
+            ax.semilogy(t, s["sigma2"][idx], color="tab:red", label=r"$\sigma_2$ (bottom)")
+            ax.axhline(av.EPS_SIGMA1, color="tab:blue", ls="--", lw=1)
+            ax.axhline(av.EPS_SIGMA2, color="tab:red", ls="-", lw=1)
+            ax.set_ylim(0.05, 100)
+            ax.set_xlabel("time since the tilt (s)")
+            ax.set_ylabel(r"$\sigma_l$")
+            ax.set_title(f"{name}: $\\theta$ = {theta:g}°", fontsize=11)
+            ax.legend(fontsize=11)
+        fig.tight_layout()
     return _save(fig, path, dpi)
 
 

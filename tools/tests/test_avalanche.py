@@ -499,3 +499,22 @@ def test_fig11_counts_the_ramps_of_each_frequency(tmp_path):
                                                    "H = 14.4 d (1 packing)"]
     handles, labels = fig.axes[0].get_legend_handles_labels()
     assert labels.count("0 kHz") == 1 and labels.count("70 kHz") == 1
+
+
+def test_sigma_panels_wrap_into_a_readable_grid(tmp_path):
+    # four runs at 19 deg: a 2 x 2 grid at least 1 200 px wide (one row of four
+    # at 80 dpi was 245 px tall); the axes beyond the runs are hidden
+    import matplotlib.image
+    from acoustic_tools import avalanche_figures as figs
+    n = 50
+    rows = [[2.0, 19.0, 1e-2, 3, 3, 0, 0, 0.0, 1, 0]]
+    rows += [[2.0 + (k + 1) * DT, 19.0, 1e-2, 0.2, 0.5, 0.1, 0.05, 0.9, 1, 0] for k in range(n)]
+    path = tmp_path / "hold.series"
+    np.savetxt(path, rows, header="time theta ...")
+    runs = figs.sigma_runs([str(path)] * 4, [19.0] * 4)
+    fig = figs.fig_sigma(tmp_path / "four.png", runs)
+    assert [ax.get_subplotspec().get_geometry()[:2] for ax in fig.axes] == [(2, 2)] * 4
+    height, width = matplotlib.image.imread(tmp_path / "four.png").shape[:2]
+    assert width >= 1200 and height >= 700
+    fig = figs.fig_sigma(tmp_path / "three.png", runs[:3])
+    assert [ax.get_visible() for ax in fig.axes] == [True, True, True, False]
