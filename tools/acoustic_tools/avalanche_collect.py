@@ -469,6 +469,16 @@ def slope_text(ms):
     return f"{ms[0]:+.3f} ± {ms[1]:.3f} °/d" if np.isfinite(ms[0]) else "—"
 
 
+def print_slopes(by_h, s0, s70):
+    """The slopes of theta_m(H/d) at 0 and 70 kHz over all packings (s0,
+    s70: theta_slope's) and from H = 6 d up, beside paper 000's, on stdout."""
+    print(f"\nslope of θ_m(H/d), all packings: 0 kHz {slope_text(s0)}, "
+          f"70 kHz {slope_text(s70)} (paper 000 ≈ {PAPER_SLOPE}°/d)")
+    t0, t70 = theta_slope(by_h, "f0", 6.0), theta_slope(by_h, "f70", 6.0)
+    print(f"the same from H = 6 d up (paper 000's grey zone of Fig. 7 left out): 0 kHz {slope_text(t0)}, "
+          f"70 kHz {slope_text(t70)}")
+
+
 def print_tables(all_ens, summary):
     """The markdown tables and lists of each geometry on stdout: theta_m,
     its shift and t_con per H (summary: summarise of each geometry), the
@@ -492,11 +502,7 @@ def print_tables(all_ens, summary):
         for r in rows:
             print(f"- H = {r['H']:g} d: 0 kHz {fmt(r['onset0'])}°, 70 kHz {fmt(r['onset70'])}°, "
                   f"shift {fmt(r['onset_shift'])}° (s.e. {fmt(standard_error(r['onset_shift']))}°)")
-        print(f"\nslope of θ_m(H/d), all packings: 0 kHz {slope_text(s0)}, "
-              f"70 kHz {slope_text(s70)} (paper 000 ≈ {PAPER_SLOPE}°/d)")
-        t0, t70 = theta_slope(by_h, "f0", 6.0), theta_slope(by_h, "f70", 6.0)
-        print(f"the same from H = 6 d up (paper 000's grey zone of Fig. 7 left out): 0 kHz {slope_text(t0)}, "
-              f"70 kHz {slope_text(t70)}")
+        print_slopes(by_h, s0, s70)
         print("\nper packing (seed: θ_m 0 / 70 kHz, t_con 0 / 70 kHz, first spreading flow 0 / 70 kHz):")
         for H, packs in sorted(by_h.items()):
             print(f"- H = {H:g} d: " + "; ".join(
@@ -745,8 +751,7 @@ def print_calibrated_thetam(label, by_h, summary):
     for r in rows:
         print(f"- H = {r['H']:g} d: 0 kHz {with_error(r['onset0'])}°, 70 kHz {with_error(r['onset70'])}°, "
               f"shift paired by packing {with_error(r['onset_shift'])}° ({r['onset_shift'][2]} pairs)")
-    print(f"\nslope of θ_m(H/d), all packings: 0 kHz {slope_text(s0)}, 70 kHz {slope_text(s70)} "
-          f"(paper 000 ≈ {PAPER_SLOPE}°/d)")
+    print_slopes(by_h, s0, s70)
     print("\nper packing (seed: θ_m 0 / 70 kHz, shift, t_con at θ_m 0 / 70 kHz):")
     for H, packs in sorted(by_h.items()):
         print(f"- H = {H:g} d: " + "; ".join(
@@ -907,13 +912,26 @@ def print_snapshots(rows):
               f"| {', '.join(f'{m:.2g}' for m in medians)} |")
 
 
-def _first_below(t, values, limit):
-    below = np.flatnonzero(np.asarray(values) < limit)
-    return float(t[below[0]]) if len(below) else np.nan
+def _first_held_below(t, values, limit, hold=0.01):
+    """The first time from which values stay below limit for hold (the
+    ramps' hold of the criteria, at least two samples), nan if never: a lone
+    low sample, as just after the tilt while the layer is still at rest,
+    does not count."""
+    t = np.asarray(t, dtype=float)
+    if len(t) < 2:
+        return np.nan
+    need = max(2, int(round(hold / (t[1] - t[0]))))
+    run = 0
+    for k, below in enumerate(np.asarray(values) < limit):
+        run = run + 1 if below else 0
+        if run >= need:
+            return float(t[k - need + 1])
+    return np.nan
 
 
 def fields_rows(jobs):
-    """Rows (H, title, time sigma_2 first below its criterion, sigma_1's,
+    """Rows (H, title, time from which sigma_2 stays below its criterion
+    (_first_held_below), sigma_1's,
     [(t, share of the layer's columns moving faster than a tenth of the
     mean)]) of the motion below and at theta_m of packing 1 (Figs. 6/9, 14)."""
     from .avalanche_fields import as_array
@@ -927,8 +945,8 @@ def fields_rows(jobs):
                 columns = as_array(snap["columns"])
                 columns = columns[np.isfinite(columns)]          # a column without a grain says nothing
                 moving.append((snap["t"], float(np.mean(columns / np.mean(columns) > 0.1))))
-            rows.append((float(H), title, _first_below(t, as_array(f["sigma2"]), av.EPS_SIGMA2),
-                         _first_below(t, as_array(f["sigma1"]), av.EPS_SIGMA1), moving))
+            rows.append((float(H), title, _first_held_below(t, as_array(f["sigma2"]), av.EPS_SIGMA2),
+                         _first_held_below(t, as_array(f["sigma1"]), av.EPS_SIGMA1), moving))
     return rows
 
 

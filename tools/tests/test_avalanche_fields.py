@@ -146,3 +146,15 @@ def test_the_record_keeps_the_fields_of_a_calibrated_ramp(tmp_path):
     assert [os.path.basename(p) for p in written] == ["fig6_9_fields_H6.png", "fig14_front_H6.png"]
     with open(record / a.job_name(s) / "fields.json") as handle:
         json.load(handle)                                                # strict JSON: no NaN
+
+
+def test_sigma_times_need_the_criterion_held_not_a_lone_sample():
+    """Figs. 6/9 in numbers: the time from which a sigma stays below its
+    criterion for the ramps' hold (0.01 s, two samples of 5 ms here); the
+    lone low sample right after the tilt does not count."""
+    t = 0.005 * np.arange(1, 11)
+    sigma = np.array([0.25, 1.2, 1.1, 0.29, 1.3, 0.2, 0.25, 0.1, 1.0, 0.2])
+    assert avalanche_collect._first_held_below(t, sigma, 0.3) == t[5]
+    assert avalanche_collect._first_held_below(t, sigma, 0.3, hold=0.015) == t[5]
+    assert np.isnan(avalanche_collect._first_held_below(t, sigma, 0.3, hold=0.03))
+    assert np.isnan(avalanche_collect._first_held_below(t, np.ones(10), 0.3))
