@@ -506,9 +506,11 @@ def production(name):
                                    {"steps": (1, 2, 3), "angles": (19.0,) if H == 6 else ()})) for f in (0, 70e3)]
     elif name == "sensitivity":
         # the 70 kHz shift at 14.4 d with the band top read 5 kHz lower or
-        # higher (kappa_scale 0.14, 0.21); the 0 Hz ramps are the thickness set's
-        for k in SENSITIVITY:
-            jobs += [("ramp", ramp_settings(free(SENSITIVITY_H, s), 70e3, kappa=k, theta0=10)) for s in PACKINGS]
+        # higher (kappa_scale 0.14, 0.21); the 0 Hz ramps are the thickness set's.
+        # Packing by packing, so that a set stopped part way has both
+        # couplings on the packings it ran
+        for s in PACKINGS:
+            jobs += [("ramp", ramp_settings(free(SENSITIVITY_H, s), 70e3, kappa=k, theta0=10)) for k in SENSITIVITY]
     elif name == "paper_length":
         # one packing at 6 d and one at 14.4 d, 2000 d long, observed over
         # paper 000's 571 d, both frequencies, in pieces (Runner.ramp)
