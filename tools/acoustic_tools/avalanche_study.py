@@ -165,8 +165,12 @@ def tcon_settings(ramp, theta, tuniform=None, dumpevery=0):
     tag = f"tcon_{ramp['tag']}_{theta:.1f}" + (f"_u{_g(tuniform)}" if tuniform is not None else "")
     s = {k: ramp[k] for k in ("H", "seed", "free", "layer", "Edem", "rest", "freq", "kappa", "source", "tfollow",
                               "deposit", "window") if k in ramp}
+    # setup 0: no set-up of its own before the angle, so that a run at the
+    # ramp's next angle repeats it bit for bit (in.avalanche; runs recorded
+    # before 7 December 2026 made two and have no "setup" in their job.json)
     s.update(kind="tcon", tag=tag, ramp_tag=ramp["tag"], ramp=job_name(ramp), theta=float(f"{theta:.1f}"),
-             tuniform=None if tuniform is None else float(tuniform), switch_on=None, dumpevery=int(dumpevery))
+             tuniform=None if tuniform is None else float(tuniform), switch_on=None, dumpevery=int(dumpevery),
+             setup=0)
     return s
 
 
@@ -422,7 +426,7 @@ class Runner:
             if not self.finished(s):
                 study.write_job(d, s)
                 restart = os.path.relpath(os.path.join(self.directory(ramp), f"{ramp['tag']}.static.restart"), d)
-                variables = {"restart": restart, "pre": 0, "tag": s["tag"], "freq": _hz(s["freq"]),
+                variables = {"restart": restart, "pre": 0, "setup": s["setup"], "tag": s["tag"], "freq": _hz(s["freq"]),
                              "kappa": _g(s["kappa"]), "source": s["source"], "theta0": f"{theta:.1f}",
                              "thetamax": f"{theta:.1f}", "tfollow": _g(s["tfollow"]),
                              "obslo": geometry_variables(s)["obslo"], "obshi": geometry_variables(s)["obshi"],

@@ -199,7 +199,10 @@ def test_outputs_go_forward_in_time(pieced):
                                                ("Edem", "-1", "Edem must be a Young modulus > 0 in Pa"),
                                                ("rest", "0", "rest must be a coefficient of restitution in (0, 1]"),
                                                ("tuniform", "2", "tuniform must lie between tchunk (0.001 s) and "
-                                                "twin + tfollow (1.3 s), got 2 s")])
+                                                "twin + tfollow (1.3 s), got 2 s"),
+                                               ("setup", "2", "setup must be 1 (a set-up before the first angle) "
+                                                "or 0"),
+                                               ("setup", "0", "setup 0 needs -var pre 0")])
 def test_bad_piece_variables(tmp_path, var, value, what):
     done = subprocess.run([LMP, "-in", os.path.join(HERE, "in.avalanche"), "-var", "dir", HERE,
                            "-var", var, value, "-log", "log.bad", "-screen", "none", "-nocite"],
@@ -259,3 +262,32 @@ def test_tcon_run_with_a_longer_uniform_hold(tmp_path, whole):
     assert uniform_streak_start(base / f"tcon_f0_{theta}.series", 10) == pytest.approx(t_default, abs=2e-4)
     a = series_data(base / f"tcon_f0_{theta}.series")
     assert series_data(held.parent / f"tcon_f0_{theta}_u0.05.series")[:len(a)] == a
+
+
+def test_tcon_run_from_a_moving_state_is_the_ramps_next_angle_bit_for_bit(tmp_path, whole):
+    """A t_con run from the ramp's last static state (written at the end of
+    its last stable, stopped or local angle) at the ramp's next angle makes
+    no set-up of its own before the angle (setup 0), as the ramp made none
+    there: it is that angle of the ramp again, sample for sample -- the
+    fields set holds the ramp's flow at theta_m longer.  At 70 kHz on 2
+    ranks with angles of 0.1 s the layer still moves where that state is
+    written; the two set-ups a new run made before (each rescales the
+    tangential history of the sliding contacts) made it another flow."""
+    share_deposit(whole, tmp_path)
+    run_job(tmp_path, "70e3", "14", "2", "--tfollow", "0", "--piece", "0")
+    ramp = json.load(open(tmp_path / RAMP["70e3"] / "result.json"))
+    angles_of = ramp["angles"]
+    last = max(k for k, a in enumerate(angles_of) if a["state"] in ("stable", "stopped", "local"))
+    assert last + 1 < len(angles_of) and angles_of[last]["max_ratio"] > 1e-3, "the layer moves at the restart"
+    theta = angles_of[last + 1]["theta"]
+    run_job(tmp_path, "70e3", "14", "2", "--tfollow", "0", "--tcon", "--tcon-steps", f"{theta - ramp['theta_m']:g}")
+    tag = f"tcon_f70_{theta:.1f}"
+    d = tmp_path / f"periodic20_H3_s7_{tag}"
+    assert json.load(open(d / "result.json"))["angles"] == [angles_of[last + 1]]
+
+    def at(path):
+        return [line for line in series_data(path) if float(line.split()[1]) == theta]
+
+    assert len(at(tmp_path / RAMP["70e3"] / "f70.series")) > 50
+    assert at(d / f"{tag}.series") == at(tmp_path / RAMP["70e3"] / "f70.series")
+    assert "no set-up before the first angle (setup 0)" in open(d / f"log.{tag}").read()
