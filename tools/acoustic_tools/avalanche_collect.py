@@ -912,17 +912,21 @@ def print_snapshots(rows):
               f"| {', '.join(f'{m:.2g}' for m in medians)} |")
 
 
-def _first_held_below(t, values, limit, hold=0.01):
+def _first_held_below(t, values, limit, hold=0.01, mobile=None, fspread=0.5):
     """The first time from which values stay below limit for hold (the
-    ramps' hold of the criteria, at least two samples), nan if never: a lone
-    low sample, as just after the tilt while the layer is still at rest,
-    does not count."""
+    ramps' hold of the criteria, at least two samples) while more than
+    fspread of the observed grains are mobile (the ramps' uniform criterion;
+    mobile None: not asked), nan if never: low samples of a layer that barely
+    moves, as just after the tilt, do not count."""
     t = np.asarray(t, dtype=float)
     if len(t) < 2:
         return np.nan
     need = max(2, int(round(hold / (t[1] - t[0]))))
+    counts = np.asarray(values) < limit
+    if mobile is not None:
+        counts &= np.asarray(mobile, dtype=float) > fspread
     run = 0
-    for k, below in enumerate(np.asarray(values) < limit):
+    for k, below in enumerate(counts):
         run = run + 1 if below else 0
         if run >= need:
             return float(t[k - need + 1])
@@ -931,7 +935,8 @@ def _first_held_below(t, values, limit, hold=0.01):
 
 def fields_rows(jobs):
     """Rows (H, title, time from which sigma_2 stays below its criterion
-    (_first_held_below), sigma_1's,
+    with more than half the observed grains mobile (_first_held_below),
+    sigma_1's,
     [(t, share of the layer's columns moving faster than a tenth of the
     mean)]) of the motion below and at theta_m of packing 1 (Figs. 6/9, 14)."""
     from .avalanche_fields import as_array
@@ -945,8 +950,9 @@ def fields_rows(jobs):
                 columns = as_array(snap["columns"])
                 columns = columns[np.isfinite(columns)]          # a column without a grain says nothing
                 moving.append((snap["t"], float(np.mean(columns / np.mean(columns) > 0.1))))
-            rows.append((float(H), title, _first_held_below(t, as_array(f["sigma2"]), av.EPS_SIGMA2),
-                         _first_held_below(t, as_array(f["sigma1"]), av.EPS_SIGMA1), moving))
+            mobile = as_array(f["mobile"]) if "mobile" in f else None
+            rows.append((float(H), title, _first_held_below(t, as_array(f["sigma2"]), av.EPS_SIGMA2, mobile=mobile),
+                         _first_held_below(t, as_array(f["sigma1"]), av.EPS_SIGMA1, mobile=mobile), moving))
     return rows
 
 
@@ -961,6 +967,8 @@ def print_fields(rows):
     for H, title, t2, t1, moving in rows:
         print(f"| {H:g} | {title} | {num(t2, '.2f')} | {num(t1, '.2f')} | "
               f"{', '.join(f'{t:.1f}: {100 * m:.0f} %' for t, m in moving)} |")
+    print("\n(σ_l < criterion from: the first time from which it holds 10 ms with more than half of the "
+          "observed grains mobile, as in the ramps' uniform criterion)")
 
 
 def study_data(top):

@@ -78,7 +78,8 @@ def angle_fields(frames, series, theta, dt, obs, times=TIMES):
     """The motion at angle theta: the frames at that angle nearest to each of
     `times` (s since the tilt; those the angle lasted), their speed cells
     over the observation window obs (fractions of the box), their column
-    speeds, and sigma_1, sigma_2 every SIGMA_EVERY ms; a dict (JSON values,
+    speeds, and sigma_1, sigma_2 and the mobile fraction of the observed
+    grains every SIGMA_EVERY ms; a dict (JSON values,
     nan as None)."""
     parts = [(t, idx) for th, t, idx in av.angle_samples(series) if abs(th - theta) < 1e-6]
     if not parts:
@@ -108,7 +109,8 @@ def angle_fields(frames, series, theta, dt, obs, times=TIMES):
             "window_d": [round(float((w - lo) / d), 2) for w in window], "cell_d": list(CELL),
             "height_d": round(float(height / d), 2), "snapshots": snapshots,
             "sigma_t": [round(float(v), 4) for v in t_since[keep]],
-            "sigma1": _json(series["sigma1"][idx][keep]), "sigma2": _json(series["sigma2"][idx][keep])}
+            "sigma1": _json(series["sigma1"][idx][keep]), "sigma2": _json(series["sigma2"][idx][keep]),
+            "mobile": _json(series["mobile"][idx][keep])}
 
 
 def _json(values):

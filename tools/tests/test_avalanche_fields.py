@@ -62,6 +62,7 @@ def test_angle_fields_take_the_frames_of_the_angle_at_the_kept_times():
     assert np.nanmin(cells) == np.nanmax(cells) == pytest.approx(0.9)
     assert f["window_d"] == [25.0, 75.0] and f["t_end"] == pytest.approx(1.3)
     assert f["sigma_t"][:2] == pytest.approx([0.005, 0.010]) and f["sigma1"][0] == pytest.approx(0.105)
+    assert f["mobile"][:2] == [0.5, 0.5], "the mobile fraction beside the sigmas"
     with pytest.raises(ValueError, match="no series samples at 11"):
         fields.angle_fields(frames, series, 11.0, dt, (0.25, 0.75))
 
@@ -158,3 +159,10 @@ def test_sigma_times_need_the_criterion_held_not_a_lone_sample():
     assert avalanche_collect._first_held_below(t, sigma, 0.3, hold=0.015) == t[5]
     assert np.isnan(avalanche_collect._first_held_below(t, sigma, 0.3, hold=0.03))
     assert np.isnan(avalanche_collect._first_held_below(t, np.ones(10), 0.3))
+    # with the mobile fraction: only samples of a layer that has spread count
+    # (more than half of the grains mobile); the still layer's low sigma
+    # at the tilt does not
+    sigma = np.array([0.2, 0.2, 0.2, 1.2, 0.2, 0.2, 0.2, 0.2, 0.2, 0.2])
+    mobile = np.array([0.0, 0.1, 0.2, 0.6, 0.6, 0.4, 0.7, 0.8, 0.9, 1.0])
+    assert avalanche_collect._first_held_below(t, sigma, 0.3) == t[0]
+    assert avalanche_collect._first_held_below(t, sigma, 0.3, mobile=mobile) == t[6]
