@@ -53,6 +53,7 @@ from .lammps_output import Snapshot, read_ave_time_vector, read_dump
 EPS_E = 3e-8      # paper 000: E_k/E_t threshold of a stable state
 EPS_SIGMA1 = 0.3  # paper 000: sigma_1 (top half) of a uniform flow
 EPS_SIGMA2 = 0.9  # paper 000: sigma_2 (bottom half) of a uniform flow
+FSPREAD = 0.5     # in.avalanche: mobile fraction of a flow that spreads
 
 
 # ---------------------------------------------------------------- reading
@@ -289,7 +290,7 @@ class AngleResult:
 
 
 def classify_angle(time, ratio, sigma1, sigma2, mobile, dt=1e-3, twin=0.1, thold=0.01,
-                   eps_e=EPS_E, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, fspread=0.5, theta=np.nan, tfollow=1.2):
+                   eps_e=EPS_E, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, fspread=FSPREAD, theta=np.nan, tfollow=1.2):
     """Paper 000's test at one angle, on samples taken every dt after the tilt.
 
     Same rules as in.avalanche: uniform as soon as sigma_1 < eps1, sigma_2 < eps2
@@ -373,7 +374,7 @@ def bottom_to_top_velocity(series, theta, nsamples=10):
     return float(np.mean(series["vx2"][idx]) / np.mean(series["vx1"][idx]))
 
 
-def sigma1_spread(series, theta, fspread=0.5):
+def sigma1_spread(series, theta, fspread=FSPREAD):
     """(median, 10th percentile) of sigma_1 over the samples at angle `theta`
     in which more than fspread of the grains are mobile (nan if none): how
     far a spreading flow is from the criterion, and how deep it dips."""
@@ -384,7 +385,7 @@ def sigma1_spread(series, theta, fspread=0.5):
     return float(np.median(values)), float(np.percentile(values, 10))
 
 
-def uniform_streaks(time, sigma1, sigma2, mobile=None, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, fspread=0.5):
+def uniform_streaks(time, sigma1, sigma2, mobile=None, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, fspread=FSPREAD):
     """(time of the first sample, number of samples) of every stretch of
     consecutive samples with sigma_1 < eps1 and sigma_2 < eps2 (and more
     than fspread of the grains mobile, when `mobile` is given)."""
@@ -397,7 +398,7 @@ def uniform_streaks(time, sigma1, sigma2, mobile=None, eps1=EPS_SIGMA1, eps2=EPS
     return [(float(time[k - n[k] + 1]), int(n[k])) for k in ends]
 
 
-def t_con(time, sigma1, sigma2, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, hold=1, mobile=None, fspread=0.5):
+def t_con(time, sigma1, sigma2, eps1=EPS_SIGMA1, eps2=EPS_SIGMA2, hold=1, mobile=None, fspread=FSPREAD):
     """First time from which the criteria of uniform_streaks() hold for `hold` samples."""
     for start, samples in uniform_streaks(time, sigma1, sigma2, mobile, eps1, eps2, fspread):
         if samples >= hold:

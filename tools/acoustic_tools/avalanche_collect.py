@@ -912,7 +912,7 @@ def print_snapshots(rows):
               f"| {', '.join(f'{m:.2g}' for m in medians)} |")
 
 
-def _first_held_below(t, values, limit, hold=0.01, mobile=None, fspread=0.5):
+def _first_held_below(t, values, limit, hold=0.01, mobile=None, fspread=av.FSPREAD):
     """The first time from which values stay below limit for hold (the
     ramps' hold of the criteria, at least two samples) while more than
     fspread of the observed grains are mobile (the ramps' uniform criterion;
