@@ -330,9 +330,12 @@ def fig_percolation(path, rows, coupling="", dpi=110):
     angle, fraction, state) (avalanche_collect.percolation_rows), a star at
     the uniform flow (theta_m)."""
     heights = sorted({r[0] for r in rows})
+    ncols = min(3, len(heights))
+    nrows = -(-len(heights) // ncols)
     with plt.rc_context(READABLE):
-        fig, axes = plt.subplots(1, len(heights), figsize=(6.5 * len(heights) + 1, 5.2), squeeze=False)
-        for ax, H in zip(axes[0], heights):
+        fig, axes = plt.subplots(nrows, ncols, figsize=(6.0 * ncols + 0.5, 4.8 * nrows), squeeze=False)
+        panels = axes.ravel()
+        for ax, H in zip(panels, heights):
             mine = [r for r in rows if r[0] == H]
             packings = sorted({r[1] for r in mine}, key=int)
             count = {}
@@ -354,9 +357,16 @@ def fig_percolation(path, rows, coupling="", dpi=110):
             ax.set_xlabel(r"slope angle $\theta$ (°)")
             ax.set_title(f"H = {H:g} d ({_ramp_count(count)})")
             ax.grid(alpha=0.3)
-        axes[0][0].set_ylabel("largest fraction of grains moving at the angle")
-        axes[0][0].plot([], [], "*", ms=13, color="0.5", mec="k", label=r"uniform flow ($\theta_m$)")
-        axes[0][0].legend(loc="upper left")
+        for row in axes:
+            row[0].set_ylabel("largest fraction of grains\nmoving at the angle")
+        panels[0].plot([], [], "*", ms=13, color="0.5", mec="k", label=r"uniform flow ($\theta_m$)")
+        spare = panels[len(heights):]
+        for ax in spare:
+            ax.axis("off")
+        if len(spare):        # the legend in the empty panel of the grid, clear of the data
+            spare[0].legend(*panels[0].get_legend_handles_labels(), loc="center", fontsize="large")
+        else:
+            panels[0].legend(loc="upper left")
         fig.suptitle("Moving zones against the slope, without and with 70 kHz" + (f": {coupling}" if coupling else ""))
         fig.tight_layout()
     return _save(fig, path, dpi)
@@ -421,7 +431,7 @@ def fig_front(path, runs, times=(0.2, 0.4), dpi=100):
     columns between them; a uniform one is flat."""
     from .avalanche_fields import as_array
     with plt.rc_context(READABLE):
-        fig, axes = plt.subplots(len(times), 1, figsize=(13, 4.6 * len(times)), squeeze=False, sharex=True)
+        fig, axes = plt.subplots(len(times), 1, figsize=(16, 4.6 * len(times)), squeeze=False, sharex=True)
         for ax, t in zip(axes[:, 0], times):
             for label, f_khz, f in runs:
                 snap = min(f["snapshots"], key=lambda s: abs(s["t"] - t))
@@ -429,14 +439,15 @@ def fig_front(path, runs, times=(0.2, 0.4), dpi=100):
                 speed = as_array(snap["columns"])
                 ratio = speed / np.nanmean(speed)
                 ax.plot(x - x.min(), ratio, "-o", ms=3.5, color=COLOUR.get(int(f_khz), "0.4"),
-                        label=f"{label}, t = {snap['t']:.2f} s: {100 * np.mean(ratio > 0.1):.0f} % of the "
+                        label=f"{label},\nt = {snap['t']:.2f} s: {100 * np.mean(ratio > 0.1):.0f} % of the "
                               "columns above 0.1")
             ax.axhline(1.0, color="0.6", lw=0.8)
             ax.axhline(0.1, color="0.6", lw=0.8, ls=":")
             ax.set_yscale("log")
             ax.set_ylabel("mean speed / layer mean")
             ax.set_title(f"{t:g} s after the tilt to $\\theta_m$", fontsize=13)
-            ax.legend(fontsize=10, loc="lower center")
+            # beside the panel: inside, a profile with a deep dip ran under it
+            ax.legend(fontsize=10.5, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
             ax.grid(alpha=0.3)
         axes[-1][0].set_xlabel("distance from the back of the layer (d), 10 d columns; the front is at the right")
         fig.tight_layout()
