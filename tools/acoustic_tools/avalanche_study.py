@@ -18,8 +18,10 @@ written by the deck at its end (the run adds LAMMPS's total wall time to it):
 A ramp runs as pieces, each a LAMMPS process that pauses after the angle
 that ends `piece` simulated seconds after its start; the next piece goes on
 from the last whole angle (in.avalanche's TAG.resume), and a piece that was
-killed loses what it wrote after that angle (cut_after).  A finished job is
-skipped, so the production is resumed by repeating the command.
+killed loses what it wrote after that angle (cut_after); pieces.json keeps
+when each piece began and ended, so that the wall time of a ramp counts a
+killed piece up to its last whole angle (killed_pieces_time).  A finished
+job is skipped, so the production is resumed by repeating the command.
 
   Settings, job_name, deposit_settings, ramp_settings, tcon_settings
                         the settings of each kind of job and its name
@@ -180,6 +182,50 @@ def read_resume(path):
     return float(words[0]), float(words[1]), int(words[2]), words[3], words[4], words[5]
 
 
+PIECES = "pieces.json"    # a ramp's pieces: when each began and ended (Runner.ramp)
+
+
+def _read_pieces(directory):
+    path = os.path.join(directory, PIECES)
+    return json.load(open(path)) if os.path.exists(path) else []
+
+
+def _write_pieces(directory, pieces):
+    path = os.path.join(directory, PIECES)
+    with open(path + ".part", "w") as f:
+        json.dump(pieces, f, indent=1)
+        f.write("\n")
+    os.replace(path + ".part", path)
+
+
+def piece_begins(directory, tag):
+    """Note that a piece of the ramp in directory begins (pieces.json).  A
+    piece before it that never ended was killed: it kept what it wrote up to
+    its last whole angle, when it last wrote TAG.resume, so its "kept" wall
+    time is from its start to then (0 if it wrote no angle)."""
+    pieces = _read_pieces(directory)
+    if pieces and pieces[-1].get("end") is None:
+        resume = os.path.join(directory, f"{tag}.resume")
+        written = os.path.getmtime(resume) if os.path.exists(resume) else 0.0
+        pieces[-1]["kept"] = max(0.0, written - pieces[-1]["start"])
+    pieces.append({"start": time.time()})
+    _write_pieces(directory, pieces)
+
+
+def piece_ends(directory):
+    """Note that the last piece begun in directory ended (its LAMMPS process
+    finished and wrote its "Total wall time")."""
+    pieces = _read_pieces(directory)
+    pieces[-1]["end"] = time.time()
+    _write_pieces(directory, pieces)
+
+
+def killed_pieces_time(directory):
+    """The wall time (s) that the killed pieces of the ramp in directory
+    spent on what the ramp kept (piece_begins); 0 if none was killed."""
+    return sum(p.get("kept", 0.0) for p in _read_pieces(directory))
+
+
 def cut_after(directory, tag, t, theta, step):
     """Drop what a killed piece wrote after the last whole angle (theta,
     ended at time t and step): the series lines after it (the one of that
@@ -277,10 +323,15 @@ class Runner:
         return law
 
     def finish(self, directory, logs):
-        """Add LAMMPS's total wall time of the job's logs to its result.json."""
+        """Add LAMMPS's total wall time of the job's logs to its result.json,
+        and that of its killed pieces up to their last whole angle (they
+        write no total: killed_pieces_time)."""
         result = study.read_result(directory)
         result["wall_time"] = sum(wall_time(os.path.join(directory, log)) for log in logs
                                   if os.path.exists(os.path.join(directory, log)))
+        killed = killed_pieces_time(directory)
+        if killed:
+            result["wall_time"] = round(result["wall_time"] + killed)
         path = os.path.join(directory, study.RESULT)
         with open(path + ".part", "w") as f:
             json.dump(result, f, indent=1)
@@ -341,6 +392,7 @@ class Runner:
                 self.say(f"{name}: paused after {pieces} piece(s), at {theta:.2f} deg; repeat the command to go on")
                 return None
             resume = os.path.join(d, f"{tag}.resume")
+            piece_begins(d, tag)
             if os.path.exists(os.path.join(d, f"log.{tag}")) and os.path.exists(resume):
                 theta, t, step, last, following, carry = read_resume(resume)
                 cut_after(d, tag, t, theta, step)
@@ -351,6 +403,7 @@ class Runner:
                 if s.get("switch_on") is not None and s["freq"] > 0:
                     start = self.quiet(s, d, restart, geometry)
                 self.lammps(d, "in.avalanche", dict(common, **start), f"log.{tag}", self.contact(s))
+            piece_ends(d)
             pieces += 1
             if study.read_result(d) is None and not os.path.exists(resume):
                 sys.exit(f"avalanche: {name} stopped without a result or a resume file (log.{tag})")

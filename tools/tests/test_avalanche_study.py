@@ -185,3 +185,26 @@ def test_run_selects_one_thickness():
     tcon = a.selected(a.production("tcon_cal"), [6, 14.4])
     assert len(tcon) == 16 and {ramp["H"] for _, (ramp, _) in tcon} == {6.0, 14.4}
     assert a.selected(a.production("table1")) == a.production("table1")
+
+
+def test_a_killed_piece_counts_up_to_its_last_whole_angle(tmp_path):
+    d = str(tmp_path)
+    resume = tmp_path / "f70.resume"
+    resume.write_text("12 0.5 1000 f70.restart 12.5 f70.last0.in\n")
+    a.piece_begins(d, "f70")
+    a.piece_ends(d)
+    assert a.killed_pieces_time(d) == 0, "a piece that ended wrote its own total"
+    a.piece_begins(d, "f70")                      # killed: never ends
+    pieces = a._read_pieces(d)
+    now = pieces[-1]["start"]
+    pieces[-1]["start"] = now - 100.0             # began 100 s ago,
+    a._write_pieces(d, pieces)
+    os.utime(resume, (now - 60.0, now - 60.0))    # wrote its last whole angle 40 s later
+    a.piece_begins(d, "f70")                      # killed before its first angle
+    a.piece_begins(d, "f70")
+    a.piece_ends(d)
+    pieces = a._read_pieces(d)
+    assert [p.get("kept") for p in pieces] == [None, pytest.approx(40.0), 0.0, None]
+    assert all("end" in p for p in (pieces[0], pieces[-1])) and "end" not in pieces[1]
+    assert a.killed_pieces_time(d) == pytest.approx(40.0)
+    assert a.killed_pieces_time(str(tmp_path / "none")) == 0

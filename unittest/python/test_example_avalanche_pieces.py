@@ -20,6 +20,8 @@ import sys
 
 import pytest
 
+from acoustic_tools.lammps_log import wall_time
+
 LMP = os.environ.get("ACOUSTIC_LMP", "lmp")
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "avalanche")
 STUDY = os.path.join(HERE, "study.py")
@@ -102,6 +104,12 @@ def pieced(tmp_path_factory, whole):
         f.write(f"ITEM: TIMESTEP\n{int(step) + 100}\nITEM: NUMBER OF ATOMS\n0\n")
     with open(path / "log.f0", "a") as f:
         f.write("(killed here)\n")
+    # pieces.json: a piece that began 7 s before it wrote its last whole angle
+    # and never ended (its LAMMPS total is lost with it)
+    pieces = json.load(open(path / "pieces.json"))
+    assert len(pieces) == 1 and "end" in pieces[0]
+    pieces.append({"start": os.path.getmtime(path / "f0.resume") - 7.0})
+    json.dump(pieces, open(path / "pieces.json", "w"))
     said = run_job(out, "0", "16", "1", "--piece", "0.2")
     return path, first, float(theta), said
 
@@ -181,7 +189,10 @@ def test_pieces_read_as_one_ramp(pieced):
     result = json.load(open(path / "result.json"))
     assert [(a["theta"], a["state"]) for a in result["angles"]] == steps
     assert result["theta_m"] == thetas[-1] and result["settled"] in ("at rest", "NOT at rest after tsettle")
-    assert result["wall_time"] >= 0 and json.load(open(path / "job.json"))["piece"] == "0.2"
+    assert json.load(open(path / "job.json"))["piece"] == "0.2"
+    # the LAMMPS totals of the pieces that ended, and the killed one's 7 s
+    assert result["wall_time"] == round(wall_time(str(path / "log.f0")) + 7.0)
+    assert json.load(open(path / "pieces.json"))[1]["kept"] == pytest.approx(7.0)
 
 
 def test_outputs_go_forward_in_time(pieced):
