@@ -669,6 +669,31 @@ def sensitivity_study(top):
     return sorted(rows, key=lambda r: (r[0], r[1], int(r[2]) if r[2].isdigit() else 0, r[2]))
 
 
+def band_tops(top):
+    """{packing name: (kappa_scale, band top (Hz))} of the band calibrations
+    kept in top/band/ (`study.py calibrate --band`: 99.9 % of the modes
+    below the top at the reference coupling); {} when top is not a
+    directory."""
+    tops = {}
+    if not isinstance(top, (str, os.PathLike)):
+        return tops
+    for path in sorted(glob.glob(os.path.join(str(top), "band", "*.json"))):
+        with open(path) as handle:
+            reference = json.load(handle).get("reference") or {}
+        if "kappa" in reference and "top" in reference:
+            tops[os.path.splitext(os.path.basename(path))[0]] = (float(reference["kappa"]), float(reference["top"]))
+    return tops
+
+
+def band_top_at(tops, H, seed, kappa):
+    """The band top (Hz) of the DEFAULT_LAYER d free-ends packing (H, seed)
+    at kappa_scale kappa, from its calibration (band_tops) scaled as
+    kappa_scale^(1/3) (every eigenfrequency at fixed contact forces); nan
+    without one."""
+    found = tops.get(f"free{DEFAULT_LAYER:g}_H{H:g}_s{seed}")
+    return found[1] * (kappa / found[0]) ** (1 / 3) if found else np.nan
+
+
 def sensitivity_summary(rows):
     """{kappa: ((mean, s.d., count) of theta_m at 70 kHz, of the shift)} of
     sensitivity_study's rows."""
@@ -707,22 +732,25 @@ def table1_study(top):
     return sorted(rows, key=lambda r: (r[1], r[0]))
 
 
-def calibrated_study(top):
+def calibrated_study(top, tops=None):
     """The study at the calibrated coupling: a dict with its ensembles
     ("ensembles": {label: {H: [packings]}}, ensembles(top, KAPPA)), their
     summaries ("summary"), {label: geometry} ("geometries"), the label of the free-ends 400 d one ("label",
     None without it), the sensitivity set ("sensitivity": rows of
-    sensitivity_study) and Table 1 ("table1": rows of table1_study); None
-    when none of these is there."""
+    sensitivity_study; "band_tops": the band top of each of its rows,
+    from tops, band_tops(top) by default) and Table 1 ("table1": rows of
+    table1_study); None when none of these is there."""
     jobs = _jobs(top)
     ens = ensembles(jobs, KAPPA)
     sens, t1 = sensitivity_study(jobs), table1_study(jobs)
+    tops = band_tops(top) if tops is None else tops
     if not ens and not sens and not t1:
         return None
     main = geometry_label((1, float(DEFAULT_LAYER), None, None))
     return {"ensembles": ens, "summary": {label: summarise(by_h) for label, by_h in ens.items()},
             "geometries": {label: key for key, label in geometries(jobs, KAPPA)},
             "label": main if main in ens else None, "sensitivity": sens, "table1": t1,
+            "band_tops": {(H, seed, k): band_top_at(tops, H, seed, k) for k, H, seed, *_ in sens},
             "percolation": percolation_rows(ens[main]) if main in ens else [],
             "snapshots": snapshot_rows(jobs), "fields": fields_rows(jobs)}
 
@@ -782,19 +810,24 @@ def print_calibrated_tcon(by_h):
                   + f" | {at_angle} | {paper} |")
 
 
-def print_sensitivity(rows):
-    """The sensitivity set's table (sensitivity_study's rows) and the shift
-    at each kappa_scale, on stdout; nothing without rows."""
+def print_sensitivity(rows, tops=None):
+    """The sensitivity set's table (sensitivity_study's rows; tops: the
+    band top of each row's packing at its coupling, {(H, seed, kappa): Hz})
+    and the shift at each kappa_scale, on stdout; nothing without rows."""
     if not rows:
         return
+    tops = tops or {}
     print(f"\n### 70 kHz shift against kappa_scale at H = {SENSITIVITY_H:g} d (free ends, {DEFAULT_LAYER} d; "
           f"the band top read 5 kHz lower or higher; θ_m at 0 kHz of the same packing at kappa_scale {KAPPA:g})\n")
-    print("| kappa_scale | packing | θ_m 0 kHz | θ_m 70 kHz | shift | mean μ*/μ before θ_m "
+    print("| kappa_scale | packing | band top (kHz) | θ_m 0 kHz | θ_m 70 kHz | shift | mean μ*/μ before θ_m "
           "| shift of the first spreading flow |")
-    print("|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|")
     for k, H, seed, t0, t70, shift, mu, onset_shift in rows:
-        print(f"| {k:g} | {seed} | {num(t0)}° | {t70:g}° | {num(shift)}° | {num(mu, '.3f')} "
+        top = tops.get((H, seed, k), np.nan) / 1e3
+        print(f"| {k:g} | {seed} | {num(top, '.1f')} | {num(t0)}° | {t70:g}° | {num(shift)}° | {num(mu, '.3f')} "
               f"| {num(onset_shift)}° |")
+    print("\n(band top: 99.9 % of the packing's modes below it, from its calibration in band/ "
+          "(`study.py calibrate --band`) scaled as kappa_scale^(1/3); — without one)")
     print("\nmean ± s.d. (s.e.) over the packings:")
     for k, (t70, shift) in sensitivity_summary(rows).items():
         print(f"- kappa_scale {k:g}: θ_m 70 kHz {with_error(t70)}° (n = {t70[2]}), shift {with_error(shift)}° "
@@ -852,7 +885,7 @@ def print_calibrated(cal):
     for label, by_h in cal["ensembles"].items():
         print_calibrated_thetam(label, by_h, cal["summary"][label])
         print_calibrated_tcon(by_h)
-    print_sensitivity(cal["sensitivity"])
+    print_sensitivity(cal["sensitivity"], cal.get("band_tops"))
     print_paper_length(cal["ensembles"], cal["summary"], cal["geometries"])
     print_table1(cal["table1"])
     print_percolation(cal.get("percolation", []))
@@ -988,7 +1021,7 @@ def study_data(top):
     couplings = coupling_summary(switch_on)
     data = {"ensembles": all_ens, "summary": summary, "kappa": kappa, "switch_on": switch_on,
             "couplings": couplings, "label": None, "free": None, "thetam": None, "thetam_free": None,
-            "couplings_tables": [], "tcon": [], "kappa_tables": {}, "calibrated": calibrated_study(jobs),
+            "couplings_tables": [], "tcon": [], "kappa_tables": {}, "calibrated": calibrated_study(jobs, band_tops(top)),
             "paper_tcon": [("paper000_H6_0kHz", PAPER_TCON_ANGLE_H6, PAPER_TCON_H6_19DEG[0]),
                            ("paper000_H6_70kHz", PAPER_TCON_ANGLE_H6, PAPER_TCON_H6_19DEG[1])]}
     label = "periodic" if "periodic" in all_ens else next(iter(all_ens), None)

@@ -127,6 +127,9 @@ def test_shift_against_kappa_scale_at_14_4_d(collect, tmp_path, capsys):
         ramps(Pack(tmp_path, 14.4, seed, 13.9, kappa=KAPPA), f0, f70)
         for k, t70 in ((0.14, low), (0.21, high)):
             Pack(tmp_path, 14.4, seed, 13.9, kappa=k).ramp("f70", uniform_at(t70), t70, 0.3, mu=0.7)
+    # packing 1's band calibration: 99.9 % of its modes below 90 kHz at 0.3
+    (tmp_path / "band").mkdir()
+    (tmp_path / "band" / "free400_H14.4_s1.json").write_text(json.dumps({"reference": {"kappa": 0.3, "top": 90e3}}))
     rows = collect.sensitivity_study(str(tmp_path))
     assert [r[:6] for r in rows] == [(0.14, 14.4, "1", 17.0, 16.0, 1.0), (0.14, 14.4, "2", 18.0, 16.5, 1.5),
                                      (0.17, 14.4, "1", 17.0, 15.0, 2.0), (0.17, 14.4, "2", 18.0, 15.5, 2.5),
@@ -141,7 +144,9 @@ def test_shift_against_kappa_scale_at_14_4_d(collect, tmp_path, capsys):
             "shift 2.25 ± 0.35 (0.25)° (pairs: 2)") in text
     assert ("- kappa_scale 0.14: θ_m 70 kHz 16.25 ± 0.35 (0.25)° (n = 2), "
             "shift 1.25 ± 0.35 (0.25)° (pairs: 2)") in text
-    assert "| 0.21 | 2 | 18° | 15° | 3° | 0.700 | 3° |" in text
+    assert "| 0.21 | 2 | — | 18° | 15° | 3° | 0.700 | 3° |" in text, "no band calibration of packing 2"
+    # 90 kHz x (0.21 / 0.3)^(1/3) = 79.9 kHz
+    assert "| 0.21 | 1 | 79.9 | 17° | 14° | 3° | 0.700 | 3° |" in text
     assert (tmp_path / "tables" / "kappa_calibrated.txt").read_text().splitlines()[0] == \
         "0.14 14.4 1 1 0.7 1 free_ends"
     assert "left out" not in capsys.readouterr().err
