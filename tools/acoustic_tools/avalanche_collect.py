@@ -1339,11 +1339,14 @@ def snapshot_figures(top, figdir):
 
 def band_figures(top, figdir):
     """Paper 000's Fig. 3 at the calibrated coupling: the density of states
-    of each band calibration kept in top/band/ (`study.py calibrate --band`
-    on a deposit, its JSON) at the study's coupling; returns the paths
-    written."""
+    of the band calibration kept in top/band/ (`study.py calibrate --band`
+    on a deposit, its JSON) of the snapshots' packing (SNAPSHOT_H,
+    SNAPSHOT_SEED: one figure; the other packings' calibrations give the
+    band tops of the sensitivity table) at the study's coupling; returns
+    the paths written."""
+    from .avalanche_study import SNAPSHOT_H, SNAPSHOT_SEED
     written = []
-    for path in sorted(glob.glob(os.path.join(str(top), "band", "*.json"))):
+    for path in glob.glob(os.path.join(str(top), "band", f"free{DEFAULT_LAYER:g}_H{SNAPSHOT_H:g}_s{SNAPSHOT_SEED}.json")):
         with open(path) as handle:
             band = json.load(handle)
         at = band.get("at_check")

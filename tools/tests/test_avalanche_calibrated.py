@@ -299,6 +299,8 @@ def test_fig3_from_a_kept_band_calibration(collect, tmp_path):
     (tmp_path / "band").mkdir()
     with open(tmp_path / "band" / "free400_H14.4_s4.json", "w") as f:
         json.dump({"grains": 6023, "target": 75e3, "kappa": 0.171, "at_check": at}, f)
+    with open(tmp_path / "band" / "free400_H14.4_s1.json", "w") as f:   # another packing's: its band top only
+        json.dump({"grains": 6023, "target": 75e3, "kappa": 0.165, "at_check": at}, f)
     with open(tmp_path / "band" / "old.json", "w") as f:          # a calibration without its histogram
         json.dump({"grains": 10, "at_check": {k: v for k, v in at.items() if k != "histogram"}}, f)
     written = collect.band_figures(str(tmp_path), str(tmp_path / "figures"))
