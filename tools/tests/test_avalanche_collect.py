@@ -423,6 +423,11 @@ def test_the_committed_record_gives_its_tables(collect, tmp_path):
     assert markdown.startswith("\n## The study at kappa_scale 0.17 (the calibrated coupling)\n")
     assert "\n### free ends, 400 d\n" in markdown.split("## Before the calibration")[1]
     assert "| 3 | 8524 + 2786, 2786 d | 0.1 / 0.1 | 60 / 88 | 32 % | 49 % (N = 8000) |" in markdown
-    assert sorted(os.listdir(tmp_path)) == ["kappa_free.txt", "summary.json", "summary_calibrated.json", "table1.txt",
+    # the sensitivity set: packing 1 at 0.14 and 0.21 beside its 0 kHz ramp
+    # (15 deg), with its band top from record/band/ (91.6 kHz at 0.3)
+    sens = {(r[0], r[2]): r for r in cal["sensitivity"]}
+    assert sens[(0.14, "1")][3:6] == (15.0, 15.0, 0.0) and sens[(0.21, "1")][3:6] == (15.0, 13.0, 2.0)
+    assert cal["band_tops"][(14.4, "1", 0.14)] == pytest.approx(71.0e3, abs=0.1e3)
+    assert sorted(os.listdir(tmp_path)) == ["kappa_calibrated.txt", "kappa_free.txt", "summary.json", "summary_calibrated.json", "table1.txt",
                                             "tables.md", "tcon.txt", "tcon_calibrated.txt", "thetam.txt",
                                             "thetam_calibrated.txt", "thetam_k0.17.txt"]
