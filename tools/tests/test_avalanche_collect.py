@@ -428,6 +428,10 @@ def test_the_committed_record_gives_its_tables(collect, tmp_path):
     sens = {(r[0], r[2]): r for r in cal["sensitivity"]}
     assert sens[(0.14, "1")][3:6] == (15.0, 15.0, 0.0) and sens[(0.21, "1")][3:6] == (15.0, 13.0, 2.0)
     assert cal["band_tops"][(14.4, "1", 0.14)] == pytest.approx(71.0e3, abs=0.1e3)
+    # the set is complete: four packings at each coupling, paired shifts
+    # 0, 0.5, 0.5, 1 deg at 0.14 and 2, 1.5, 1, 3 deg at 0.21 (RESULTS.md)
+    for kappa, shifts in ((0.14, (0.0, 0.5, 0.5, 1.0)), (0.21, (2.0, 1.5, 1.0, 3.0))):
+        assert tuple(sens[(kappa, str(s))][5] for s in (1, 2, 3, 4)) == shifts
     assert sorted(os.listdir(tmp_path)) == ["kappa_calibrated.txt", "kappa_free.txt", "summary.json", "summary_calibrated.json", "table1.txt",
                                             "tables.md", "tcon.txt", "tcon_calibrated.txt", "thetam.txt",
                                             "thetam_calibrated.txt", "thetam_k0.17.txt"]
