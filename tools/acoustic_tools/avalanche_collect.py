@@ -1377,8 +1377,12 @@ def fields_runs(top, H, seed="1"):
     """{(f kHz, "below" or "at"): (title, fields of one angle)} of packing
     `seed` at H/d: the last angle below theta_m that its ramp followed, and
     theta_m held 1.2 s (the fields set's t_con run at theta_m, else the
-    ramp's own theta_m, cut short when the flow became uniform)."""
+    ramp's own theta_m, cut short when the flow became uniform), on the
+    study's 400 d layer (not the paper_length set's 2000 d one)."""
+    from .avalanche_study import packing_settings
+    layer = packing_settings(H, seed)["layer"]
     jobs = [j for j in _jobs(top).values() if _in_ensemble(j, KAPPA) and j["settings"].get("free") == 1
+            and float(j["settings"].get("layer", layer)) == layer
             and abs(float(j["settings"]["H"]) - H) < 1e-9 and str(j["settings"]["seed"]) == str(seed)]
     out = {}
     for f_khz, tag in ((0, "f0"), (70, "f70")):

@@ -4,6 +4,7 @@ frames and sigma_l samples of one angle, the angles a job keeps, the fields
 set and what the record keeps (no LAMMPS: synthetic dumps and series)."""
 import json
 import os
+import shutil
 
 import numpy as np
 import pytest
@@ -134,6 +135,14 @@ def test_the_record_keeps_the_fields_of_a_calibrated_ramp(tmp_path):
     jobs = avalanche_collect.load(str(record))
     made = avalanche_collect.job_fields(jobs[a.job_name(s)])
     assert made == kept
+    # the same packing 2000 d long (paper_length) with another theta_m: not
+    # the fields of the 400 d layer's figures
+    long = a.ramp_settings(a.packing_settings(6, 1, layer=a.PAPER_LAYER), 70e3, theta0=10, window=a.PAPER_WINDOW)
+    shutil.copytree(record / a.job_name(s), record / a.job_name(long))
+    study.write_job(str(record / a.job_name(long)), long)
+    kept_long = dict(kept, theta_m=11.0)
+    with open(record / a.job_name(long) / "fields.json", "w") as handle:
+        json.dump(kept_long, handle)
     runs = avalanche_collect.fields_runs(str(record), 6.0)
     assert sorted(runs) == [(70, "at"), (70, "below")]
     assert runs[(70, "below")][0] == "70 kHz, θ = 10° (θ_m − 0.5°)"
