@@ -183,12 +183,26 @@ def fig_thetam(path, table, label="this code", free=None, free_label="free ends"
         return _save(fig, path, dpi)
 
 
+def kappa_means(kappas, shifts):
+    """Rows (kappa, mean shift, standard error, number of ramps), one per
+    distinct kappa in increasing order; the standard error is s.d./sqrt(n)
+    with n - 1 degrees of freedom (0 for a single ramp)."""
+    kappas, shifts = np.asarray(kappas, float), np.asarray(shifts, float)
+    rows = []
+    for x in np.unique(kappas):
+        s = shifts[kappas == x]
+        se = s.std(ddof=1) / np.sqrt(len(s)) if len(s) > 1 else 0.0
+        rows.append((x, s.mean(), se, len(s)))
+    return np.array(rows, float).reshape(-1, 4)
+
+
 def fig_kappa(path, rows, dpi=110):
     """The 70 kHz shift against kappa_scale, from rows (kappa, H, shift,
     mu_factor, onset_shift, geometry) (one per 70 kHz ramp; onset_shift: the
     shift of the first spreading flow; geometry "periodic" or "free_ends"):
     every ramp (filled: theta_m, open: first spreading flow), the mean of
-    theta_m's shift at each kappa for each H and geometry, and paper 000's
+    theta_m's shift at each kappa for each H and geometry with its standard
+    error (kappa_means), and paper 000's
     shift of about 2 deg as a band."""
     t = np.array([row[:5] for row in rows], float)
     geometry = np.array([row[5] for row in rows])
@@ -203,7 +217,9 @@ def fig_kappa(path, rows, dpi=110):
                 label=f"H = {H:g} d, {g.replace('_', ' ')}, one ramp each")
         ax.plot(group[:, 0], group[:, 4], "o", mfc="none", color=f"C{k}", alpha=0.6,
                 label="first spreading flow")
-        ax.plot(kappas, [group[group[:, 0] == x, 2].mean() for x in kappas], "-", color=f"C{k}", label="mean")
+        means = kappa_means(group[:, 0], group[:, 2])
+        ax.errorbar(means[:, 0], means[:, 1], yerr=means[:, 2], fmt="-", color=f"C{k}", capsize=4,
+                    label="mean ± s.e. over the ramps")
     ax.set_xscale("log")
     ax.xaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
     ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())

@@ -319,3 +319,14 @@ def test_fig11_in_numbers(collect, thickness):
     assert at[16.5] == (0, 1) and at[19.0] == (2, 0)
     markdown = collect.tables_markdown(collect.study_data(str(thickness)))
     assert "### Fig. 11 in numbers" in markdown and "- H = 3 d (0 / 70 kHz): 14°: — / 0.000" in markdown
+
+
+def test_kappa_means_give_the_mean_shift_and_its_standard_error_per_coupling():
+    from acoustic_tools.avalanche_figures import kappa_means
+    # the four 14.4 d packings' shifts as recorded (RESULTS: 0.50 +- 0.20, 2.00 +- 0.35 deg)
+    rows = kappa_means([0.17, 0.14, 0.17, 0.14, 0.17, 0.14, 0.17, 0.14, 0.3],
+                       [1.5, 0.0, 2.0, 0.5, 1.5, 0.5, 3.0, 1.0, 4.0])
+    np.testing.assert_allclose(rows[:, 0], [0.14, 0.17, 0.3])
+    np.testing.assert_allclose(rows[:, 1], [0.5, 2.0, 4.0])
+    np.testing.assert_allclose(rows[:, 2], [np.sqrt(1 / 6) / 2, np.sqrt(0.5) / 2, 0.0])
+    np.testing.assert_array_equal(rows[:, 3], [4, 4, 1])
