@@ -162,12 +162,14 @@ def fig5_heights(signals, path, title):
     """Fig. 5: the coherent part of the signal at several source-detector
     distances; signals: label -> (t, F) (e.g. the ensemble means of each
     height), drawn up to a little past the first zero crossing of the
-    tallest"""
+    tallest (the whole record when a signal does not cross zero after its
+    peak)"""
     fig, ax = plt.subplots(figsize=(6.0, 4.0))
     end = 0.0
     for k, (label, (t, f)) in enumerate(signals.items()):
         peak = sound.coherent_peak(t, f)
-        end = max(end, peak["t_zero"] + 1.5 * (peak["t_zero"] - peak["t10"]))
+        past = peak["t_zero"] + 1.5 * (peak["t_zero"] - peak["t10"])
+        end = max(end, past if np.isfinite(past) else float(np.max(t)))
         ax.plot(t, f, color=f"C{k}", lw=1.3, label=label)
     ax.set_xlim(0.0, end)
     ax.axhline(0.0, color="k", lw=0.5)

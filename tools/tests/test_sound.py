@@ -275,3 +275,16 @@ def test_piston_checks_leave_out_pistons_without_samples_at_1e_4(tmp_path):
                                                "piston_speed": speed, "mu": 0.5})
     assert len(sound_collect.pistons(str(tmp_path))) == 2
     assert sound_collect.piston_checks(str(tmp_path)) == {}
+
+
+def test_fig5_draws_the_whole_record_of_a_signal_without_a_zero_crossing(tmp_path):
+    import warnings
+
+    from acoustic_tools import sound_figures
+
+    t = np.linspace(0.0, 100.0, 500)
+    gaussian = (t, np.exp(-((t - 40.0) / 5.0) ** 2))  # never crosses zero: t_zero is nan
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # matplotlib warns on the singular x range (0, 0)
+        sound_figures.fig5_heights({"H = 8": gaussian}, tmp_path / "f5.png", "synthetic")
+    assert (tmp_path / "f5.png").stat().st_size > 1000
