@@ -1408,10 +1408,28 @@ def fields_runs(top, H, seed="1"):
     return out
 
 
+def spread_runs(top, H, seed="1"):
+    """[(layer (d), f kHz, fields of the ramp)] of packing `seed` at H/d at
+    the calibrated coupling, every layer length that has ramps with fields
+    (the study's 400 d layer and the paper_length set's 2000 d one)."""
+    runs = []
+    for j in sorted(_jobs(top).values(), key=lambda j: j["dir"]):
+        st = j["settings"]
+        if not (_in_ensemble(j, KAPPA) and st.get("free") == 1 and st["kind"] == "ramp"
+                and abs(float(st["H"]) - H) < 1e-9 and str(st["seed"]) == str(seed)):
+            continue
+        fields = job_fields(j)
+        if fields is not None:
+            runs.append((float(st.get("layer", 400.0)), float(st["freq"]) / 1e3, fields))
+    return runs
+
+
 def fields_figures(top, figdir):
     """Figs. 6/9 (the motion below and at theta_m, 0 and 70 kHz) and Fig. 14
     (speed along the layer at theta_m, 0 against 70 kHz) of packing 1 at
-    each thickness of FIELDS_H whose fields are there; returns the paths."""
+    each thickness of FIELDS_H whose fields are there, and, where packing 1
+    also has a paper-length layer, how the flows cover each layer's window
+    (paper_length_spread_H<H>.png); returns the paths."""
     from .avalanche_study import FIELDS_H
     written = []
     for H in FIELDS_H:
@@ -1427,6 +1445,10 @@ def fields_figures(top, figdir):
         if front:
             written.append(os.path.join(figdir, f"fig14_front_H{H:g}.png"))
             figs.fig_front(written[-1], front)
+        spread = spread_runs(top, float(H))
+        if len({layer for layer, _, _ in spread}) > 1:
+            written.append(os.path.join(figdir, f"paper_length_spread_H{H:g}.png"))
+            figs.fig_spread(written[-1], spread)
     return written
 
 

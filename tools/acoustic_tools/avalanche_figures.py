@@ -125,6 +125,7 @@ def fig_sigma(path, runs, dpi=110):
 
 # paper 000's colours (its Figs. 7 and 8): blue without, orange with 70 kHz
 COLOUR = {0: "tab:blue", 70: "tab:orange"}
+MARKERS = ("o", "s", "^", "D")  # the angles of a ramp, in increasing order
 READABLE = {"font.size": 13, "axes.labelsize": 14, "axes.titlesize": 14, "legend.fontsize": 11.5,
             "xtick.labelsize": 12, "ytick.labelsize": 12}
 
@@ -466,6 +467,53 @@ def fig_front(path, runs, times=(0.2, 0.4), dpi=100):
             ax.legend(fontsize=10.5, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
             ax.grid(alpha=0.3)
         axes[-1][0].set_xlabel("distance from the back of the layer (d), 10 d columns; the front is at the right")
+        fig.tight_layout()
+    return _save(fig, path, dpi)
+
+
+def fig_spread(path, runs, dpi=100):
+    """How a flow covers the observation window, layer against layer: the
+    fraction of the window's grains faster than v_mob (top row; more than
+    50 % for 10 ms is one condition of the uniform flow) and sigma_1 of
+    Eq. 3.1 (bottom row; below 0.3 the other) against the time since the
+    tilt, at the last followed angles up to theta_m, one column per
+    frequency; runs: (layer length (d), frequency (kHz), the fields of the
+    ramp (avalanche_fields)), drawn solid for the longest layer and dashed
+    for the others, darker the steeper the angle (markers in MARKERS'
+    order); sigma_1 shown between 0.2 and 100."""
+    longest = max(layer for layer, _, _ in runs)
+    frequencies = sorted({f_khz for _, f_khz, _ in runs})
+    with plt.rc_context(READABLE):
+        fig, axes = plt.subplots(2, len(frequencies), figsize=(7.2 * len(frequencies), 11.0), squeeze=False,
+                                 sharex=True)
+        for col, f_khz in enumerate(frequencies):
+            for layer, _, fields in sorted((r for r in runs if r[1] == f_khz), key=lambda r: -r[0]):
+                angles = sorted(fields["angles"], key=lambda a: a["theta"])
+                window = np.diff(angles[0]["window_d"])[0] if angles else 0.0
+                for k, a in enumerate(angles):
+                    t = a["sigma_t"]
+                    shade = 0.25 + 0.75 * (k + 1) / len(angles)
+                    style = dict(color=COLOUR.get(int(f_khz), "0.4"), alpha=shade, marker=MARKERS[k % len(MARKERS)],
+                                 markevery=max(1, len(t) // 8), ms=6,
+                                 ls="-" if layer == longest else "--", lw=2.2 if layer == longest else 1.6)
+                    theta_m = " (θ_m)" if fields["theta_m"] is not None and \
+                        abs(a["theta"] - fields["theta_m"]) < 1e-6 else ""
+                    axes[0][col].plot(t, a["mobile"], label=f"{layer:g} d layer, {window:.0f} d window, "
+                                      f"{a['theta']:g}°{theta_m}", **style)
+                    axes[1][col].plot(t, a["sigma1"], **style)
+            axes[0][col].axhline(0.5, color="0.5", lw=0.8, ls=":")
+            axes[1][col].axhline(0.3, color="0.5", lw=0.8, ls=":")
+            axes[0][col].set_title(f"{f_khz:g} kHz")
+            axes[0][col].set_ylim(0.0, 1.02)
+            axes[1][col].set_yscale("log")
+            axes[1][col].set_ylim(0.2, 100.0)  # sigma_1 of a layer at rest spikes far above: not the question
+            axes[1][col].legend(*axes[0][col].get_legend_handles_labels(), fontsize=10.5, ncol=2,
+                                loc="upper center", bbox_to_anchor=(0.5, -0.16), frameon=False)
+            axes[1][col].set_xlabel("time since the tilt (s)")
+            axes[0][col].grid(alpha=0.3)
+            axes[1][col].grid(alpha=0.3)
+        axes[0][0].set_ylabel("fraction of the window's grains\nfaster than $v_{mob}$ (uniform: > 0.5)")
+        axes[1][0].set_ylabel("$\\sigma_1$ of Eq. 3.1 (uniform: < 0.3)")
         fig.tight_layout()
     return _save(fig, path, dpi)
 

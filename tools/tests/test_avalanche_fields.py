@@ -152,8 +152,14 @@ def test_the_record_keeps_the_fields_of_a_calibrated_ramp(tmp_path):
     # sigma_1 = 0.5 and sigma_2 = 1.0 throughout: never below their criteria; all the grains move alike
     assert all(np.isnan(r[2]) and np.isnan(r[3]) for r in rows)
     assert all(m == 1.0 for _, m in rows[1][4])
+    # both layers of the packing side by side: how each flow covers its window
+    spread = avalanche_collect.spread_runs(str(record), 6.0)
+    assert [(layer, f) for layer, f, _ in spread] == [(a.PAPER_LAYER, 70.0), (400.0, 70.0)]
+    assert spread[0][2] == kept_long and spread[1][2] == kept
     written = avalanche_collect.fields_figures(str(record), str(tmp_path / "figures"))
-    assert [os.path.basename(p) for p in written] == ["fig6_9_fields_H6.png", "fig14_front_H6.png"]
+    assert [os.path.basename(p) for p in written] == ["fig6_9_fields_H6.png", "fig14_front_H6.png",
+                                                      "paper_length_spread_H6.png"]
+    assert os.path.getsize(written[-1]) > 10e3
     with open(record / a.job_name(s) / "fields.json") as handle:
         json.load(handle)                                                # strict JSON: no NaN
 
