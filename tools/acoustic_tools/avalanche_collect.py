@@ -834,6 +834,18 @@ def print_sensitivity(rows, tops=None):
               f"(pairs: {shift[2]})")
 
 
+def spreading_angles(result):
+    """The angles of a ramp's result from its first spreading flow
+    ("partial" or "uniform") up to the first uniform one (theta_m), or []
+    without a spreading flow."""
+    angles = (result or {}).get("angles", [])
+    first = next((k for k, a in enumerate(angles) if a["state"] in ("partial", "uniform")), None)
+    if first is None:
+        return []
+    last = next((k for k, a in enumerate(angles) if a["state"] == "uniform"), len(angles) - 1)
+    return angles[first:last + 1]
+
+
 def print_paper_length(ens, summary, keys):
     """The free-ends layers of another length than DEFAULT_LAYER
     (in.material's contact law; the paper_length set) beside the
@@ -861,6 +873,18 @@ def print_paper_length(ens, summary, keys):
                       f"| {r['grains']} + {r['base']} | {fmt(r['theta0'])}° | {fmt(r['theta70'])}° "
                       f"| {with_error(r['shift'])}° | {fmt(r['tcon0'])} / {fmt(r['tcon70'])} "
                       f"| {num(r['wall0'], '.0f')} / {num(r['wall70'], '.0f')} |")
+    print("\nfrom the first spreading flow to θ_m, per packing (θ: state, largest fraction of the window's "
+          "grains faster than v_mob, σ_1 / σ_2 at the end of the angle; uniform: σ_1 < 0.3, σ_2 < 0.9):")
+    for label in longer:
+        for H in sorted(ens[label]):
+            for name in (label, main):
+                for p in (ens[name].get(H, []) if name in ens else []):
+                    for tag, f_khz in (("f0", 0), ("f70", 70)):
+                        angles = spreading_angles(study.read_result(p["dirs"][tag]) if tag in p["dirs"] else None)
+                        if angles:
+                            print(f"- H = {H:g} d, {keys[name][1]:g} d, packing {p['seed']}, {f_khz} kHz: " +
+                                  "; ".join(f"{a['theta']:g}°: {a['state']}, {a['max_mobile']:.2f}, "
+                                            f"{a['sigma1']:.3g} / {a['sigma2']:.3g}" for a in angles))
 
 
 def print_table1(rows):

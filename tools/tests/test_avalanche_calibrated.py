@@ -157,9 +157,11 @@ def test_paper_length_layers_beside_the_400_d_layers(collect, tmp_path):
     ramps(Pack(tmp_path, 6, 2, 6.0, kappa=KAPPA), 18.5, 16.0)
     long = packing_settings(6, 1, layer=2000)
     write(tmp_path, deposit_settings(long), {"grains": 12680, "base": 2100, "length": 2100.0, "H_measured": 6.0})
-    for freq, theta in ((0, 17.5), (70e3, 16.5)):
+    # at 0 kHz two flows spread over part of the window before theta_m
+    for freq, states in ((0, [(16.0, "stable"), (16.5, "partial"), (17.0, "partial"), (17.5, "uniform")]),
+                         (70e3, uniform_at(16.5))):
         write(tmp_path, ramp_settings(long, freq, window=571),
-              ramp_result([angle(th, st) for th, st in uniform_at(theta)], theta, 0.4))
+              ramp_result([angle(th, st) for th, st in states], states[-1][0], 0.4))
     cal = collect.calibrated_study(str(tmp_path))
     assert list(cal["ensembles"]) == ["free ends, 400 d", "free ends, 2000 d"]
     assert cal["ensembles"]["free ends, 2000 d"][6.0][0]["window"] == 571
@@ -167,6 +169,13 @@ def test_paper_length_layers_beside_the_400_d_layers(collect, tmp_path):
     part = text.split("### layers of paper 000's length")[1]
     assert "| 6 | 2000 d, 571 d | 1 | 12680 + 2100 | 17.50° | 16.50° | 1.00° | 0.40 / 0.40 | 60 / 60 |" in part
     assert "| 6 | 400 d, 200 d | 2 | 500 + 80 | 18.25 ± 0.35° | 16.00 ± 0.00° | 2.25 ± 0.35 (0.25)° " in part
+    spreading = [line for line in part.split("###")[0].splitlines() if line.startswith("- H = ")]
+    assert spreading[:3] == ["- H = 6 d, 2000 d, packing 1, 0 kHz: 16.5°: partial, 0.00, 1 / 1; "
+                             "17°: partial, 0.00, 1 / 1; 17.5°: uniform, 0.00, 1 / 1",
+                             "- H = 6 d, 2000 d, packing 1, 70 kHz: 16.5°: uniform, 0.00, 1 / 1",
+                             "- H = 6 d, 400 d, packing 1, 0 kHz: 18°: uniform, 0.00, 1 / 1"]
+    assert len(spreading) == 6  # both ramps of the two 400 d packings: one line each
+    assert collect.spreading_angles({"angles": [angle(10, "stable"), angle(10.5, "local")]}) == []
 
 
 def test_table1_from_the_wall_times(collect, tmp_path):
