@@ -1444,7 +1444,7 @@ def spread_runs(top, H, seed="1"):
             continue
         fields = job_fields(j)
         if fields is not None:
-            runs.append((float(st.get("layer", 400.0)), float(st["freq"]) / 1e3, fields))
+            runs.append((float(st.get("layer", DEFAULT_LAYER)), float(st["freq"]) / 1e3, fields))
     return runs
 
 

@@ -213,7 +213,6 @@ def fig_kappa(path, rows, dpi=110):
     groups = sorted({(g, H) for g, H in zip(geometry, t[:, 1])}, key=lambda x: (x[1], x[0]))
     for k, (g, H) in enumerate(groups):
         group = t[(geometry == g) & (t[:, 1] == H)]
-        kappas = np.unique(group[:, 0])
         ax.plot(group[:, 0], group[:, 2], "o", color=f"C{k}", alpha=0.6,
                 label=f"H = {H:g} d, {g.replace('_', ' ')}, one ramp each")
         ax.plot(group[:, 0], group[:, 4], "o", mfc="none", color=f"C{k}", alpha=0.6,
