@@ -453,6 +453,20 @@ def plan(sets, atom_steps_per_s, solve_steps=None):
 # ---------------------------------------------------------------------------
 # the command line
 
+def select_runs(set_names, only=None):
+    """[(set, name, settings)] of the runs of SET_NAMES that ONLY's texts select (all without
+    ONLY): a text that is the name or set/name of one of these runs selects it alone
+    (im1e-2_nu1, not im1e-2_nu10); any other text, the runs whose set/name contains it."""
+    runs = [(set_name, name, settings) for set_name in set_names
+            for name, settings in set_jobs(set_name).items()]
+    if not only:
+        return runs
+    names = {text for set_name, name, _ in runs for text in (name, f"{set_name}/{name}")}
+    return [(set_name, name, settings) for set_name, name, settings in runs
+            if any(text in (name, f"{set_name}/{name}") if text in names else text in f"{set_name}/{name}"
+                   for text in only)]
+
+
 def run(args):
     """study.py run"""
     lmp = shutil.which(args.lmp) or args.lmp
@@ -461,14 +475,11 @@ def run(args):
     lmp, here, out = os.path.abspath(lmp), os.path.abspath(args.here), os.path.abspath(args.out)
     deadline = None if not args.hours else time.time() + 3600.0 * args.hours
     jobs = []
-    for set_name in args.sets:
-        for name, settings in set_jobs(set_name).items():
-            if args.only and not any(part in f"{set_name}/{name}" for part in args.only):
-                continue
-            directory = os.path.join(out, set_name, name)
-            if study.read_result(directory) is None:
-                jobs.append((lmp, here, directory, settings, args.ranks, args.piece_hours * 3600.0,
-                             args.max_pieces, print, deadline))
+    for set_name, name, settings in select_runs(args.sets, args.only):
+        directory = os.path.join(out, set_name, name)
+        if study.read_result(directory) is None:
+            jobs.append((lmp, here, directory, settings, args.ranks, args.piece_hours * 3600.0,
+                         args.max_pieces, print, deadline))
     study.run_jobs(run_job, jobs, args.jobs)
 
 
@@ -506,7 +517,8 @@ def main(here, argv=None):
         parser.add_argument("sets", nargs="+", choices=sorted(SETS), metavar="SET",
                             help=f"{', '.join(sorted(SETS))} (see RESULTS.md for the cost of each)")
         parser.add_argument("--only", nargs="+", metavar="TEXT",
-                            help="only the runs whose set/name contains one of these")
+                            help="only these runs: a run's name or set/name selects it alone, "
+                                 "any other text the runs whose set/name contains it")
         parser.add_argument("--lmp", default=os.path.join(here, "..", "..", "build", "lammps", "lmp"),
                             help="LAMMPS (default: build/lammps/lmp)")
         parser.add_argument("--jobs", type=int, default=1, help="cavities at a time (default 1)")

@@ -88,6 +88,20 @@ def test_job_settings_refuse_unknown_variables():
     assert command[command.index("walls") + 1] == "coulomb" and command[command.index("tchunk") + 1] == "0.5"
 
 
+def test_only_selects_a_named_run_alone():
+    def names(sets, only):
+        return [f"{set_name}/{name}" for set_name, name, _ in cs.select_runs(sets, only)]
+    assert len(names(["h30"], None)) == len(cs.set_jobs("h30"))
+    # a run's name selects it, not the runs whose names start with it
+    assert names(["h30"], ["im1e-2_nu1"]) == ["h30/im1e-2_nu1"]
+    assert names(["h30", "h30seeds"], ["h30/im3e-1_nu10"]) == ["h30/im3e-1_nu10"]
+    # any other text is a part of set/name
+    assert names(["h30"], ["im1e-2"]) == ["h30/im1e-2_nu1", "h30/im1e-2_nu10"]
+    assert names(["h30", "h30seeds"], ["im1e-2_nu1_s"]) == ["h30seeds/im1e-2_nu1_s2", "h30seeds/im1e-2_nu1_s3"]
+    assert names(["h30"], ["nu30", "im6e-1_nu10"]) == ["h30/im1e-1_nu30", "h30/im3e-1_nu30",
+                                                       "h30/im6e-1_nu10", "h30/im6e-1_nu30"]
+
+
 def test_tidy_series_chunks_and_dump(tmp_path):
     wall = tmp_path / "c.wall.txt"
     header = "# title\n# TimeStep F\n"
