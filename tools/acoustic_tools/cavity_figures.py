@@ -43,7 +43,7 @@ import numpy as np  # noqa: E402
 
 from . import cavity  # noqa: E402
 
-DPI = 110
+DPI = 250   # the narrowest figure (5 in) 1 250 px wide, as the avalanche's
 
 
 def _save(fig, path):

@@ -16,6 +16,7 @@ import subprocess
 import sys
 import time
 
+import matplotlib.image as mpimg
 import numpy as np
 import pytest
 
@@ -195,11 +196,12 @@ def test_study_run_in_pieces_and_collect(tmp_path, monkeypatch):
     and figures read it"""
     tiny = {"c1": dict(Hd=4, LH=5, NP=4, NU=10, strain=3, tskip=1, freq=0, seed=2, walls="coulomb", stress=1,
                        tchunk=1, uslid=0)}
-    monkeypatch.setitem(cavity_study.SETS, "tiny", tiny)
+    # in the place of the h30 set, so that collect and figures take it for the H/d = 30 scan
+    monkeypatch.setitem(cavity_study.SETS, "h30", tiny)
     out = tmp_path / "out"
-    argv = ["run", "tiny", "--out", str(out), "--lmp", LMP, "--piece-hours", "1e-7", "--max-pieces", "2"]
+    argv = ["run", "h30", "--out", str(out), "--lmp", LMP, "--piece-hours", "1e-7", "--max-pieces", "2"]
     cavity_study.main(HERE, argv)
-    run = out / "tiny" / "c1"
+    run = out / "h30" / "c1"
     assert study.read_result(str(run)) is None and cavity_study.read_resume(str(run), "cavity") is not None
     cavity_study.main(HERE, argv)
     p = study.read_result(str(run))
@@ -207,14 +209,16 @@ def test_study_run_in_pieces_and_collect(tmp_path, monkeypatch):
     assert study.read_job(str(run))["seed"] == 2 and "-var seed 2" in " ".join(
         cavity_study.command(LMP, HERE, str(run), study.read_job(str(run))))
     cavity_study.main(HERE, ["collect", "--out", str(out)])
-    row = json.loads((out / "summary.json").read_text())["runs"]["tiny/c1"]
+    row = json.loads((out / "summary.json").read_text())["runs"]["h30/c1"]
     assert row["walls"] == "coulomb" and row["seed"] == 2 and "stationarity" in row and "zeros" in row
     assert row["mu_I_points"] > 0
     cavity_study.main(HERE, ["figures", "--out", str(out), "--figures", str(tmp_path / "figs")])
+    widths = {png.name: mpimg.imread(str(png)).shape[1] for png in (tmp_path / "figs").glob("*.png")}
+    assert "fig13_wall_pdfs_H30.png" in widths and min(widths.values()) >= 1200, widths
     # the record keeps the run's numbers without its recordings, and gives the same tables
     record = tmp_path / "record"
     cavity_study.main(HERE, ["record", "--out", str(out), "--record", str(record)])
-    kept = sorted(os.listdir(record / "tiny" / "c1"))
+    kept = sorted(os.listdir(record / "h30" / "c1"))
     assert kept == ["job.json", "region.json", "result.json", "row.json"]
     cavity_study.main(HERE, ["collect", "--out", str(record)])
     assert (record / "tables.md").read_text() == (out / "tables.md").read_text()
