@@ -452,10 +452,18 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
                   f"| {_pm(q.get('cv_wall', (np.nan, np.nan, 0)), 2)} | {_pm(q.get('skew_wall', (np.nan, np.nan, 0)), 2)} "
                   f"| {_pm(q.get('eq7_wall_sigma', (np.nan, np.nan, 0)), 2)} |")
     if mu_fit is not None:
-        (m1, m2, i0), (e1, e2, ei), n = mu_fit
-        print(f"\nEq. 20 fit of the local μ(I) over the region of Fig. 19 of the runs with a stress field ({n} bins): "
-              f"μ1 = {m1:.3f} ± {e1:.3f}, μ2 = {m2:.3f} ± {e2:.3f}, I0 = {i0:.3g} ± {ei:.2g} (paper 004: 0.12, 0.40, 0.13)")
+        print("\n" + eq20_line(mu_fit))
     return "".join(lines)
+
+
+def eq20_line(mu_fit):
+    """The line of the tables for mu_I_fit's ((mu1, mu2, I0), errors, bins), saying so
+    when an error is larger than its value (too few bins, or I0 outside their range)"""
+    (m1, m2, i0), (e1, e2, ei), n = mu_fit
+    loose = not all(np.isfinite(e) and e < abs(v) for v, e in ((m1, e1), (m2, e2), (i0, ei)))
+    return (f"Eq. 20 fit of the local μ(I) over the region of Fig. 19 of the runs with a stress field ({n} bins): "
+            f"μ1 = {m1:.3f} ± {e1:.3f}, μ2 = {m2:.3f} ± {e2:.3f}, I0 = {i0:.3g} ± {ei:.2g} (paper 004: 0.12, 0.40, 0.13)"
+            + ("; not constrained by these bins (an error larger than its value)" if loose else ""))
 
 
 def figures(runs, fit, figdir, fit30=None, eq5=None, mu_fit=None):

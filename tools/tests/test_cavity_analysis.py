@@ -109,6 +109,18 @@ def test_fit_mu_I():
     assert e1 < 0.01 and e2 < 0.02
 
 
+def test_eq20_line_says_when_the_fit_is_not_constrained():
+    from acoustic_tools import cavity_collect
+    rng = np.random.default_rng(4)
+    I = np.logspace(-4, 0, 300)
+    mu = cavity.mu_I_model(I, *cavity.PAPER_MU_I) + 0.005 * rng.standard_normal(len(I))
+    line = cavity_collect.eq20_line((*cavity.fit_mu_I(I, mu), len(I)))
+    assert line.startswith("Eq. 20 fit") and "(300 bins)" in line and "not constrained" not in line
+    # four points of a flat mu: I0 and mu2 are free
+    flat = cavity.fit_mu_I([1e-3, 2e-3, 3e-3, 4e-3], [0.3, 0.31, 0.29, 0.3])
+    assert "not constrained" in cavity_collect.eq20_line((*flat, 4))
+
+
 def test_stress_and_velocity_fields_of_chunk_sums():
     # two bins of d x d, grains with known per-atom stress (N m, LAMMPS's
     # sign: negative in compression) and velocities
