@@ -15,7 +15,8 @@ acoustic_tools.lammps_output, into paper 004's quantities:
               (Delta t_c at C = 0.15, Figs. 8-10);
   Eq. 7       trunc_lognormal_pdf, trunc_lognormal_cdf, sample_trunc_lognormal,
               trunc_lognormal_loglik and fit_trunc_lognormal (maximum
-              likelihood, Nelder-Mead, Figs. 12-14);
+              likelihood, Nelder-Mead, Figs. 12-14), eq7_location_spread
+              (what stays determined in the Gaussian limit f0 -> infinity);
   PDFs        normalised_pdf (density of values / mean), mean_portion_pdf (the
               mean over portions 3..9 of Fig. 14b);
   wall        portion_forces and portion_force_series (force on n equal
@@ -434,14 +435,31 @@ def zero_fraction(values, tol=0.0):
     return float(np.mean(np.abs(v) <= tol)) if v.size else np.nan
 
 
+EQ7_GAUSSIAN_F0 = 100.0   # f0 above 100 mean forces: the fit has run to Eq. 7's Gaussian limit
+
+
+def eq7_location_spread(mu, sigma, f0):
+    """Eq. 7 before its truncation, f = X - f0 with X log-normal(mu, sigma):
+    (location E[f], spread sd(f), gaussian_limit).  Where the data are
+    Gaussian the likelihood climbs on towards f0 -> infinity, sigma -> 0
+    (the log-normal's Gaussian limit) and mu, sigma, f0 stop being
+    determined one by one; the location and spread stay determined.
+    gaussian_limit: f0 > EQ7_GAUSSIAN_F0 (in units of the mean force)."""
+    if not (np.isfinite(mu) and np.isfinite(sigma) and np.isfinite(f0)):
+        return np.nan, np.nan, False
+    mean_x = math.exp(mu + 0.5 * sigma * sigma)
+    return mean_x - f0, mean_x * math.sqrt(math.expm1(sigma * sigma)), bool(f0 > EQ7_GAUSSIAN_F0)
+
+
 def fit_eq7_with_zeros(values, tol=0.0):
     """Eq. 7 fitted to the records as the histograms show them: the values
     are scaled by the mean of all the records (zeros included); the zero
     records are a mass p0 at F = 0 (their maximum-likelihood weight in the
     mixture p0 delta(F) + (1 - p0) Eq. 7 is their fraction), Eq. 7 is fitted
     by maximum likelihood to the positive ones.  Returns {"p0", "mu",
-    "sigma", "f0", "n", "n_positive", "mean"} (mu, sigma, f0 of the scaled
-    values; NaN when fewer than 10 are positive)."""
+    "sigma", "f0", "loc", "spread", "gaussian_limit", "n", "n_positive",
+    "mean"} (mu, sigma, f0 of the scaled values, NaN when fewer than 10 are
+    positive; loc, spread, gaussian_limit from eq7_location_spread)."""
     v = np.asarray(values, float).ravel()
     v = v[np.isfinite(v)]
     mean = float(v.mean()) if v.size else np.nan
@@ -451,6 +469,8 @@ def fit_eq7_with_zeros(values, tol=0.0):
     out["n_positive"] = int(positive.size)
     if positive.size >= 10 and mean > 0:
         out["mu"], out["sigma"], out["f0"] = (float(x) for x in fit_trunc_lognormal(positive / mean))
+    loc, spread, limit = eq7_location_spread(out["mu"], out["sigma"], out["f0"])
+    out.update(loc=float(loc), spread=float(spread), gaussian_limit=limit)
     return out
 
 

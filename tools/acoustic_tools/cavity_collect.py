@@ -270,8 +270,10 @@ def by_im(runs, prefixes=H30_SCAN, digits=2):
     """The runs of the sets prefixes grouped by I_M (to `digits` significant
     digits): {I_M: {quantity: (mean, standard error, runs)}} over packings
     and (N_U, N_P) pairs; quantities Fnorm, ell_over_L, dtc_mean_dU,
-    dtc_mean_s, cv_wall, skew_wall, the Eq. 7 wall and meso parameters and
-    the zero fractions, plus "pairs" (the (N_U, N_P)) and "seeds"."""
+    dtc_mean_s, cv_wall, skew_wall, the Eq. 7 parameters of each scale (mu,
+    sigma, f0 over the fits short of the Gaussian limit; loc, spread over all;
+    "gaussian": how many reached it) and the zero fractions, plus "pairs"
+    (the (N_U, N_P)) and "seeds"."""
     groups = {}
     for name, (r, _) in _select(runs, prefixes).items():
         groups.setdefault(float(f"{r['I_M']:.{digits}g}"), []).append(r)
@@ -281,8 +283,15 @@ def by_im(runs, prefixes=H30_SCAN, digits=2):
         for key in ("Fnorm", "ell_over_L", "dtc_mean_dU", "dtc_mean_s", "cv_wall", "skew_wall"):
             q[key] = _mean_sem([row.get(key, np.nan) for row in rows])
         for scale in ("wall", "meso", "particle"):
-            for k in ("mu", "sigma", "f0", "p0"):
-                q[f"eq7_{scale}_{k}"] = _mean_sem([row[f"eq7_{scale}"][k] for row in rows])
+            fits = [row[f"eq7_{scale}"] for row in rows]
+            shapes = [cavity.eq7_location_spread(f["mu"], f["sigma"], f["f0"]) for f in fits]
+            # mu, sigma, f0 over the fits short of the Gaussian limit, where they are determined
+            for k in ("mu", "sigma", "f0"):
+                q[f"eq7_{scale}_{k}"] = _mean_sem([f[k] for f, shape in zip(fits, shapes) if not shape[2]])
+            q[f"eq7_{scale}_p0"] = _mean_sem([f["p0"] for f in fits])
+            q[f"eq7_{scale}_loc"] = _mean_sem([shape[0] for shape in shapes])
+            q[f"eq7_{scale}_spread"] = _mean_sem([shape[1] for shape in shapes])
+            q[f"eq7_{scale}_gaussian"] = sum(shape[2] for shape in shapes)
         q["pairs"] = sorted({(row["NU"], row["NP"]) for row in rows})
         q["seeds"] = sorted({row.get("seed", 1) for row in rows})
         q["runs"] = len(rows)
@@ -326,6 +335,17 @@ def us_effects(runs, prefix="h30us/", quantities=US_QUANTITIES):
     return result
 
 
+def e7(fit):
+    """Eq. 7's parameters of a fit_eq7_with_zeros dict as the tables print
+    them: "mu, sigma, f0", or at the Gaussian limit (f0 above 100 mean
+    forces, cavity.eq7_location_spread) the location and spread, which stay
+    determined there"""
+    loc, spread, limit = cavity.eq7_location_spread(fit["mu"], fit["sigma"], fit["f0"])
+    if limit:
+        return f"Gaussian limit: location {loc:.2f}, spread {spread:.2f}"
+    return f"{g(fit['mu'], 2)}, {g(fit['sigma'], 2)}, {g(fit['f0'], 2)}"
+
+
 def _pm(value, digits=3):
     mean, sem, n = value
     if not np.isfinite(mean):
@@ -348,11 +368,10 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
           "| CV, skewness of F | Eq. 7 wall μ, σ, f0 | wall time (s) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name, (r, _) in sorted(runs.items(), key=lambda kv: (kv[0].split("/")[0], kv[1][0]["I_M"], kv[0])):
-        fw = r["fit_wall"]
         print(f"| {name} | {r['Hd']:g} | {r['NP']:g} | {r['NU']:g} | {r['I_M']:.3g} | {r['grains']} "
               f"| {r['recorded_HU']:.0f}; {r['recorded_s']:.3g} | {r['Fnorm']:.3f} ± {r['Fnorm_sem']:.3f} | {g(r.get('ell_over_L'), 2)} "
               f"| {r['phi3d']:.3f} | {g(r['dtc_mean_dU'], 2)}; {g(1e3 * r['dtc_mean_s'], 2)} | {g(r['dtc_wall_dU'], 2)} "
-              f"| {r['cv_wall']:.2f}, {r['skew_wall']:.2f} | {g(fw[0], 2)}, {g(fw[1], 2)}, {g(fw[2], 2)} | {r['wall_s']:.0f} |")
+              f"| {r['cv_wall']:.2f}, {r['skew_wall']:.2f} | {e7(r['eq7_wall'])} | {r['wall_s']:.0f} |")
     for label, f in (("the H/d = 10 scan", fit), ("the H/d = 30 scan (sets h30, h30seeds)", fit30)):
         if f is not None:
             (r1, r2, i0), (e1, e2, ei), chi2 = f
@@ -365,16 +384,20 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
               f"c2 = {c2:.3f} ± {e2:.3f}, R² = {r2:.2f} (paper 004 Fig. 4: 0.88, 0.5, R² = 0.96)")
     groups = by_im(runs)
     if groups:
-        print("\nThe H/d = 30 scan by I_M (mean ± standard error over the packings and (N_U, N_P) pairs):\n")
+        print("\nThe H/d = 30 scan by I_M (mean ± standard error over the packings and (N_U, N_P) pairs; Eq. 7's "
+              "μ, σ, f0 over the fits short of its Gaussian limit (f0 above 100 mean forces, where the likelihood "
+              "climbs on to f0 → ∞, σ → 0 and they are not determined one by one), its location and spread "
+              "(mean and standard deviation of the untruncated law) over all):\n")
         print("| I_M | runs | (N_U, N_P) | seeds | F/(PLd) | ℓ/L | ⟨Δt_c⟩ (d/U) | ⟨Δt_c⟩ (ms) | CV of F | skewness "
-              "| Eq. 7 wall μ | σ | f0 | p0 wall | p0 meso |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+              "| Eq. 7 wall μ | σ | f0 | location | spread | at the Gaussian limit | p0 wall | p0 meso |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         for im, q in groups.items():
             ms = tuple(1e3 * x if i < 2 else x for i, x in enumerate(q["dtc_mean_s"]))
             print(f"| {im:g} | {q['runs']} | {', '.join(f'({a:g}, {b:.3g})' for a, b in q['pairs'])} "
                   f"| {', '.join(str(x) for x in q['seeds'])} | {_pm(q['Fnorm'])} | {_pm(q['ell_over_L'], 2)} "
                   f"| {_pm(q['dtc_mean_dU'], 2)} | {_pm(ms, 2)} | {_pm(q['cv_wall'], 2)} | {_pm(q['skew_wall'], 2)} "
                   f"| {_pm(q['eq7_wall_mu'], 2)} | {_pm(q['eq7_wall_sigma'], 2)} | {_pm(q['eq7_wall_f0'], 2)} "
+                  f"| {_pm(q['eq7_wall_loc'], 2)} | {_pm(q['eq7_wall_spread'], 2)} | {q['eq7_wall_gaussian']} of {q['runs']} "
                   f"| {_pm(q['eq7_wall_p0'], 2)} | {_pm(q['eq7_meso_p0'], 2)} |")
     print("\nZero records, Eq. 7 with the zeros apart (μ, σ, f0 of the positive records scaled by the mean of all; "
           "p0 their fraction) and stationarity (z: the second half's mean minus the first's over its standard "
@@ -384,12 +407,8 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     for name, (r, _) in sorted(runs.items(), key=lambda kv: (kv[0].split("/")[0], kv[1][0]["I_M"], kv[0])):
         z, st = r["zeros"], r["stationarity"]
-
-        def e7(scale):
-            f = r[f"eq7_{scale}"]
-            return f"{g(f['mu'], 2)}, {g(f['sigma'], 2)}, {g(f['f0'], 2)}"
         print(f"| {name} | {r['meso_portions']} ({r['meso_size_d']:.2g}) | {z['wall']:.3f} | {z['meso']:.3f} "
-              f"| {z['particle_records']:.3f} | {e7('particle')} | {e7('meso')} | {e7('wall')} "
+              f"| {z['particle_records']:.3f} | {e7(r['eq7_particle'])} | {e7(r['eq7_meso'])} | {e7(r['eq7_wall'])} "
               f"| {st['F_z']:.1f} | {st['F_rel']:.3f} | {st['portions_max_abs_z']:.1f} |")
     sens = _select(runs, ("h30sens/",))
     if sens:
@@ -402,10 +421,9 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
             for label, row in ((name, r), (base, runs[base][0] if base else None)):
                 if row is None:
                     continue
-                fw = row["fit_wall"]
                 print(f"| {label} | {'' if label != name else (base or '—')} | {row['Fnorm']:.3f} ± {row['Fnorm_sem']:.3f} "
                       f"| {g(row.get('ell_over_L'), 2)} | {g(row['dtc_mean_dU'], 2)} | {row['cv_wall']:.2f} "
-                      f"| {g(fw[0], 2)}, {g(fw[1], 2)}, {g(fw[2], 2)} |")
+                      f"| {e7(row['eq7_wall'])} |")
     us = {n: r for n, (r, _) in runs.items() if n.startswith("us/")}
     if us:
         print("\n| I_M | F/(PLd) 0 / 70 kHz | ℓ/L 0 / 70 kHz | ⟨Δt_c⟩ (d/U) 0 / 70 kHz | CV of F 0 / 70 kHz "
@@ -415,11 +433,10 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
             a, b = us.get(base + "_f0"), us.get(base + "_f70")
             if not a or not b:
                 continue
-            fa, fb = a["fit_wall"], b["fit_wall"]
             print(f"| {a['I_M']:.3g} | {a['Fnorm']:.3f} ± {a['Fnorm_sem']:.3f} / {b['Fnorm']:.3f} ± {b['Fnorm_sem']:.3f} | {g(a.get('ell_over_L'), 2)} / "
                   f"{g(b.get('ell_over_L'), 2)} | {g(a['dtc_mean_dU'], 2)} / {g(b['dtc_mean_dU'], 2)} "
-                  f"| {a['cv_wall']:.2f} / {b['cv_wall']:.2f} | {g(fa[0], 2)}, {g(fa[1], 2)}, {g(fa[2], 2)} / "
-                  f"{g(fb[0], 2)}, {g(fb[1], 2)}, {g(fb[2], 2)} | {b.get('mu_ratio', np.nan):.3f}, "
+                  f"| {a['cv_wall']:.2f} / {b['cv_wall']:.2f} | {e7(a['eq7_wall'])} / {e7(b['eq7_wall'])} "
+                  f"| {b.get('mu_ratio', np.nan):.3f}, "
                   f"{b.get('frac_below_half', np.nan):.3f} |")
     us30 = _select(runs, ("h30us/",))
     if us30:

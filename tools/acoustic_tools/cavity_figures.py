@@ -132,7 +132,8 @@ def fig10_correlation_times(IM, dtc, path, title=""):
 def _pdfs_with_fits(samples, path, fits, bins, xlabel, title):
     """PDFs of values / mean for each I_M (zero records apart: their
     fraction p0 in the legend, the density of the others integrates to
-    1 - p0) with (1 - p0) Eq. 7 (dashed) and Eq. 7's parameters against I_M;
+    1 - p0) with (1 - p0) Eq. 7 (dashed) and Eq. 7's parameters against I_M
+    (open markers: a fit at Eq. 7's Gaussian limit, cavity.eq7_location_spread);
     fits: I_M -> cavity.fit_eq7_with_zeros's dict or (mu, sigma, f0)"""
     ims = sorted(samples)
     fits = dict(fits or {})
@@ -158,9 +159,16 @@ def _pdfs_with_fits(samples, path, fits, bins, xlabel, title):
     left.set_title("(a)")
     left.legend(frameon=False, fontsize=6)
     params = np.array([[fits[im]["mu"], fits[im]["sigma"], fits[im]["f0"]] for im in ims])
+    limit = np.array([cavity.eq7_location_spread(*row)[2] for row in params], bool)
     for k, (name, marker) in enumerate(((r"$\mu$", "o"), (r"$\sigma$", "s"), (r"$f_0$", "^"))):
-        right.semilogx(ims, params[:, k], marker + "-", label=name)
-    right.set_xlabel(r"$I_M$")
+        line, = right.plot(ims, params[:, k], marker + "-", label=name)
+        if limit.any():      # open markers: the fit at Eq. 7's Gaussian limit
+            right.plot(np.asarray(ims)[limit], params[limit, k], marker, mfc="white", color=line.get_color())
+    right.set_xscale("log")
+    right.set_yscale("symlog", linthresh=0.1)      # f0 runs to 1e5 at the Gaussian limit, mu may be < 0
+    lowest = np.nanmin(params) if np.isfinite(params).any() else 0.0
+    right.set_ylim(bottom=min(0.0, 3.0 * lowest))
+    right.set_xlabel(r"$I_M$" + (f"  (open: Gaussian limit, $f_0$ > {cavity.EQ7_GAUSSIAN_F0:g})" if limit.any() else ""))
     right.set_ylabel("Eq. 7 parameters")
     right.set_title("(b)")
     right.legend(frameon=False)

@@ -38,6 +38,22 @@ def test_zero_fraction_and_eq7_with_zeros():
     assert math.isnan(cavity.fit_eq7_with_zeros(np.zeros(50))["mu"])
 
 
+def test_eq7_gaussian_limit_keeps_location_and_spread():
+    rng = np.random.default_rng(12)
+    # a log-normal shape well short of the limit: location and spread are its own
+    mu, sigma, f0 = 0.1, 0.5, 0.6
+    loc, spread, limit = cavity.eq7_location_spread(mu, sigma, f0)
+    x = np.exp(mu + sigma * rng.standard_normal(400000))
+    assert not limit and loc == pytest.approx((x - f0).mean(), rel=0.01) and spread == pytest.approx(x.std(), rel=0.01)
+    # Gaussian records (mean 1, sd 0.3, nearly none below 0): the likelihood climbs on to
+    # f0 -> infinity, sigma -> 0; mu, sigma, f0 drift but the location and spread are the Gaussian's
+    values = 1.0 + 0.3 * rng.standard_normal(20000)
+    fit = cavity.fit_eq7_with_zeros(values[values > 0])
+    assert fit["gaussian_limit"] and fit["f0"] > cavity.EQ7_GAUSSIAN_F0 and fit["sigma"] < 0.01
+    assert fit["loc"] == pytest.approx(1.0, abs=0.02) and fit["spread"] == pytest.approx(0.3, abs=0.02)
+    assert math.isnan(cavity.eq7_location_spread(np.nan, 0.5, 1.0)[0])
+
+
 def _ar1(n, phi, rng):
     x = np.empty(n)
     x[0] = 0
@@ -189,6 +205,13 @@ def test_by_im_groups_packings_and_pairs():
     mean, sem, n = q["Fnorm"]
     assert mean == pytest.approx(0.52) and sem == pytest.approx(0.02 / math.sqrt(3)) and n == 3
     assert groups[0.3]["Fnorm"][2] == 1 and np.isnan(groups[0.3]["Fnorm"][1])
+    # a fit at Eq. 7's Gaussian limit is counted and left out of mu, sigma, f0, not of the location
+    runs["h30/b"][0]["eq7_wall"] = {"mu": 12.0, "sigma": 3e-6, "f0": 1.6e5, "p0": 0.0}
+    q = cavity_collect.by_im(runs)[1e-3]
+    assert q["eq7_wall_gaussian"] == 1 and q["eq7_wall_mu"][2] == 2 and q["eq7_wall_loc"][2] == 3
+    assert q["eq7_wall_mu"][0] == pytest.approx(0.1) and q["eq7_meso_gaussian"] == 0
+    assert "Gaussian limit: location" in cavity_collect.e7(runs["h30/b"][0]["eq7_wall"])
+    assert cavity_collect.e7(runs["h30/a"][0]["eq7_wall"]) == "0.1, 0.5, 1"
 
 
 def test_spectrum_position(tmp_path):
