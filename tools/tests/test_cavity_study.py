@@ -2,6 +2,8 @@
 H/d = 30) as data, the length and cost rules, and the tidying of the
 outputs of a cavity run as pieces (synthetic files)"""
 import math
+import os
+import shutil
 
 import pytest
 
@@ -127,3 +129,16 @@ def test_tidy_series_chunks_and_dump(tmp_path):
     dump.write_text(whole + frame(30, 3)[:-10])
     cs.tidy_dump(str(dump), upto=25)
     assert dump.read_text() == whole
+
+
+def test_the_committed_record_gives_its_tables(tmp_path, capsys):
+    # examples/cavity/record: collect from the record alone prints the committed tables.md
+    here = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "cavity")
+    record = os.path.join(here, "record")
+    if not os.path.isdir(os.path.join(record, "h30")):
+        pytest.skip("no H/d = 30 run recorded yet")
+    copy = tmp_path / "record"
+    shutil.copytree(record, copy)
+    cs.main(here, ["collect", "--out", str(copy)])
+    assert (copy / "tables.md").read_text() == open(os.path.join(record, "tables.md")).read()
+    assert "| h30/im1e-2_nu1 |" in capsys.readouterr().out
