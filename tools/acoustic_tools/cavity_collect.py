@@ -307,8 +307,9 @@ def us_effects(runs, prefix="h30us/", quantities=US_QUANTITIES):
     the differences x(f, seed) - x(0, seed) of each quantity over the
     packings (seeds) that ran both (the same deposit: paired), their mean
     and standard error: {(NU, freq): {quantity: (mean, sem, n)}}; also the
-    wall-scale Eq. 7 sigma ("eq7_wall_sigma") and where the drive falls in
-    the spectrum ("modes_below_drive", mean over the driven runs)"""
+    spread sd(f) of the wall-scale Eq. 7 fit ("eq7_wall_spread": unlike
+    sigma it stays determined at Eq. 7's Gaussian limit) and where the drive
+    falls in the spectrum ("modes_below_drive", mean over the driven runs)"""
     table = {}
     for name, (r, _) in runs.items():
         if name.startswith(prefix):
@@ -322,9 +323,9 @@ def us_effects(runs, prefix="h30us/", quantities=US_QUANTITIES):
         entry["_below"].append(r.get("modes_below_drive", np.nan))
         if base is None:
             continue
-        for q in quantities + ("eq7_wall_sigma",):
-            a = r["eq7_wall"]["sigma"] if q == "eq7_wall_sigma" else r.get(q, np.nan)
-            b = base["eq7_wall"]["sigma"] if q == "eq7_wall_sigma" else base.get(q, np.nan)
+        for q in quantities + ("eq7_wall_spread",):
+            a = r["eq7_wall"]["spread"] if q == "eq7_wall_spread" else r.get(q, np.nan)
+            b = base["eq7_wall"]["spread"] if q == "eq7_wall_spread" else base.get(q, np.nan)
             entry["_diffs"].setdefault(q, []).append(a - b)
     result = {}
     for key, entry in out.items():
@@ -442,7 +443,7 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
     if us30:
         print("\nUltrasound at N_P = 1, H/d = 30 (h30us; mean ± standard error over the packings; the drive "
               "against the network's highest mode at the end of each run):\n")
-        print("| N_U | I_M | f (kHz) | runs | F/(PLd) | ⟨Δt_c⟩ (d/U) | CV of F | Eq. 7 wall σ | highest mode (kHz) "
+        print("| N_U | I_M | f (kHz) | runs | F/(PLd) | ⟨Δt_c⟩ (d/U) | CV of F | Eq. 7 wall spread | highest mode (kHz) "
               "| f / highest mode | modes below f | 99.9 % of the modes below (kHz) | mean μ*/μ |")
         print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         groups = {}
@@ -453,7 +454,7 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
             ratio = _mean_sem([freq / row["highest_mode"] if row.get("highest_mode") else np.nan for row in rows])
             print(f"| {NU:g} | {rows[0]['I_M']:.3g} | {freq / 1e3:g} | {len(rows)} | {_pm(_mean_sem([x['Fnorm'] for x in rows]))} "
                   f"| {_pm(_mean_sem([x['dtc_mean_dU'] for x in rows]), 2)} | {_pm(_mean_sem([x['cv_wall'] for x in rows]), 2)} "
-                  f"| {_pm(_mean_sem([x['eq7_wall']['sigma'] for x in rows]), 2)} | {_pm(high, 3)} "
+                  f"| {_pm(_mean_sem([x['eq7_wall']['spread'] for x in rows]), 2)} | {_pm(high, 3)} "
                   f"| {'—' if freq == 0 else _pm(ratio, 2)} | {_pm(_mean_sem([x['modes_below_drive'] for x in rows]), 3)} "
                   f"| {_pm(_mean_sem([x['band_top'] / 1e3 for x in rows]), 3)} "
                   f"| {_pm(_mean_sem([x.get('mu_ratio', np.nan) for x in rows]), 3)} |")
@@ -461,13 +462,13 @@ def print_tables(runs, fit, fit30=None, eq5=None, mu_fit=None):
     if effects:
         print("\nThe effect of the drive (h30us): the driven run minus the undriven one of the same packing, mean ± "
               "standard error over the packings:\n")
-        print("| N_U | I_M | f (kHz) | modes below f | ΔF/(PLd) | Δ⟨Δt_c⟩ (d/U) | ΔCV of F | Δskewness | ΔEq. 7 wall σ |")
+        print("| N_U | I_M | f (kHz) | modes below f | ΔF/(PLd) | Δ⟨Δt_c⟩ (d/U) | ΔCV of F | Δskewness | ΔEq. 7 wall spread |")
         print("|---|---|---|---|---|---|---|---|---|")
         for (NU, freq), q in sorted(effects.items()):
             print(f"| {NU:g} | {q['I_M']:.3g} | {freq / 1e3:g} | {_pm(q['modes_below_drive'], 3)} "
                   f"| {_pm(q.get('Fnorm', (np.nan, np.nan, 0)), 2)} | {_pm(q.get('dtc_mean_dU', (np.nan, np.nan, 0)), 2)} "
                   f"| {_pm(q.get('cv_wall', (np.nan, np.nan, 0)), 2)} | {_pm(q.get('skew_wall', (np.nan, np.nan, 0)), 2)} "
-                  f"| {_pm(q.get('eq7_wall_sigma', (np.nan, np.nan, 0)), 2)} |")
+                  f"| {_pm(q.get('eq7_wall_spread', (np.nan, np.nan, 0)), 2)} |")
     if mu_fit is not None:
         print("\n" + eq20_line(mu_fit))
     return "".join(lines)

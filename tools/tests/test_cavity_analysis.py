@@ -258,7 +258,8 @@ def test_us_effects_are_paired_by_packing(tmp_path):
     from acoustic_tools import cavity_collect, cavity_figures as cf
 
     def row(NU, freq, seed, F, dtc, below=np.nan):
-        fit = {"mu": 0.0, "sigma": 0.5 + freq * 1e-6, "f0": 1.0, "p0": 0.0}
+        fit = {"mu": 0.0, "sigma": 0.01, "f0": 1e3, "p0": 0.0, "spread": 0.5 + freq * 1e-6,
+               "gaussian_limit": True}                               # sigma says nothing there; spread does
         return ({"I_M": 0.0061 * NU, "NU": NU, "freq": freq, "seed": seed, "Fnorm": F, "dtc_mean_dU": dtc,
                  "cv_wall": 0.5, "skew_wall": 0.2, "eq7_wall": fit, "modes_below_drive": below}, None)
     runs = {}
@@ -270,7 +271,7 @@ def test_us_effects_are_paired_by_packing(tmp_path):
     q = effects[(1, 70e3)]
     mean, sem, n = q["Fnorm"]
     assert n == 3 and mean == pytest.approx(-0.02 + 0.002) and sem == pytest.approx(0.001 / math.sqrt(3))
-    assert q["dtc_mean_dU"][0] == pytest.approx(-0.5) and q["eq7_wall_sigma"][0] == pytest.approx(0.07)
+    assert q["dtc_mean_dU"][0] == pytest.approx(-0.5) and q["eq7_wall_spread"][0] == pytest.approx(0.07)
     assert q["modes_below_drive"][0] == pytest.approx(0.98)
     assert effects[(1, 35e3)]["Fnorm"][2] == 1
     text = cavity_collect.print_tables({}, None) + ""
