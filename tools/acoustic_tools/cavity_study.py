@@ -13,6 +13,7 @@
   collect   OUT/summary.json and OUT/tables.md (acoustic_tools.cavity_collect)
   figures   the PNG figures (acoustic_tools.cavity_figures)
   plan      the runs of the sets given, their length and their estimated cost
+            (--progress: how much of each is done in OUT and the hours left)
   record    job.json, result.json and the numbers of each finished run
             (row.json, cavity_collect.record) into RECORD/<set>/<name>/,
             without the recordings: collect --out RECORD makes every table
@@ -427,26 +428,47 @@ def cost_hours(settings, atom_steps_per_s, solve_steps=None):
     return (prep + shear * factor) * atoms / atom_steps_per_s / 3600.0
 
 
-def plan(sets, atom_steps_per_s, solve_steps=None):
-    """The lines of a table of the runs of sets: name, I_M, length, steps, hours"""
+def done_fraction(directory, settings):
+    """How much of the run in directory is done, as a fraction of its steps
+    (deposit and compression, then the shear): 1 when it has its result,
+    the last whole chunk of the shear (TAG.resume) when it is paused, 0
+    before its first chunk"""
+    if study.read_result(directory) is not None:
+        return 1.0
+    resume = read_resume(directory, settings["tag"])
+    if resume is None:
+        return 0.0
+    prep, shear = steps(settings)
+    return min(1.0, (prep + resume[0]) / (prep + shear))
+
+
+def plan(sets, atom_steps_per_s, solve_steps=None, out=None):
+    """The lines of a table of the runs of sets: name, I_M, length, steps,
+    hours; with out (the runs' directory) also how much of each is done and
+    the hours left"""
     lines = ["| run | H/d | L/H | N_U | N_P | I_M | walls | f (kHz) | shear (H/U) | recorded (d/U; s) "
-             "| steps | chunk (H/U) | hours |", "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-    total = {}
+             "| steps | chunk (H/U) | hours |" + (" done | hours left |" if out else ""),
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|" + ("---|---|" if out else "")]
+    total, left = {}, {}
     for set_name in sets:
         for name, s in set_jobs(set_name).items():
             hours = cost_hours(s, atom_steps_per_s, solve_steps)
             total[set_name] = total.get(set_name, 0.0) + hours
+            done = done_fraction(os.path.join(out, set_name, name), s) if out else 0.0
+            left[set_name] = left.get(set_name, 0.0) + (1.0 - done) * hours
             im = s["NU"] / math.sqrt(s["NP"]) * (1.0 / s["Hd"]) ** 1.5
             rec_s = (s["strain"] - s["tskip"]) * hu_seconds(s["NU"], s["Hd"])
             rec_du = (s["strain"] - s["tskip"]) * s["Hd"]
             prep, shear = steps(s)
             lines.append(f"| {set_name}/{name} | {s['Hd']} | {s.get('LH', 5)} | {s['NU']} | {s['NP']:g} | {im:.3g} "
                          f"| {s.get('walls', 'smooth')} | {s['freq'] / 1e3:g} | {s['strain']:g} | {rec_du:.0f}; {rec_s:.3g} "
-                         f"| {prep + shear:.3g} | {s.get('tchunk', 1):g} | {hours:.1f} |")
+                         f"| {prep + shear:.3g} | {s.get('tchunk', 1):g} | {hours:.1f} |"
+                         + (f" {100 * done:.0f} % | {(1 - done) * hours:.1f} |" if out else ""))
     lines.append("")
     for set_name, hours in total.items():
-        lines.append(f"{set_name}: {len(SETS[set_name])} runs, {hours:.0f} h")
-    lines.append(f"all: {sum(total.values()):.0f} h on one rank")
+        lines.append(f"{set_name}: {len(SETS[set_name])} runs, {hours:.0f} h"
+                     + (f", {left[set_name]:.1f} h left" if out else ""))
+    lines.append(f"all: {sum(total.values()):.0f} h on one rank" + (f", {sum(left.values()):.1f} h left" if out else ""))
     return lines
 
 
@@ -500,7 +522,7 @@ def record_command(args):
 
 def plan_command(args):
     """study.py plan"""
-    print("\n".join(plan(args.sets, args.rate, args.solve_steps)))
+    print("\n".join(plan(args.sets, args.rate, args.solve_steps, args.out if args.progress else None)))
 
 
 def main(here, argv=None):
@@ -538,7 +560,10 @@ def main(here, argv=None):
                             help="where the runs go (default: examples/cavity/record, committed)")
 
     def plan_arguments(parser):
+        common(parser)
         parser.add_argument("sets", nargs="+", choices=sorted(SETS), metavar="SET")
+        parser.add_argument("--progress", action="store_true",
+                            help="also how much of each run is done in --out and the hours left")
         parser.add_argument("--rate", type=float, default=RATE,
                             help=f"grain-steps per second of one rank (default {RATE:.3g}, measured: RESULTS.md)")
         parser.add_argument("--solve-steps", type=float, default=US_SOLVE_STEPS,

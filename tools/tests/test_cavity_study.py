@@ -82,6 +82,26 @@ def test_cost_model():
     assert lines[-1].startswith("all: ") and any(line.startswith("| h30sens/") for line in lines)
 
 
+def test_plan_progress_counts_finished_and_paused_runs(tmp_path):
+    jobs = cs.set_jobs("h30")
+    finished, paused = tmp_path / "h30" / "im3e-1_nu10", tmp_path / "h30" / "im1e-1_nu30"
+    finished.mkdir(parents=True)
+    paused.mkdir(parents=True)
+    (finished / "result.json").write_text('{"Fnorm": 0.86}')
+    prep, shear = cs.steps(jobs["im1e-1_nu30"])
+    (paused / f"{jobs['im1e-1_nu30']['tag']}.resume").write_text(f"{round(shear / 2)} a.restart a.in 0\n")
+    done = cs.done_fraction(str(paused), jobs["im1e-1_nu30"])
+    assert done == pytest.approx((prep + round(shear / 2)) / (prep + shear))
+    assert cs.done_fraction(str(finished), jobs["im3e-1_nu10"]) == 1.0
+    assert cs.done_fraction(str(tmp_path / "h30" / "im1e-3_nu1"), jobs["im1e-3_nu1"]) == 0.0
+    rate = 3e6
+    lines = cs.plan(["h30"], rate, out=str(tmp_path))
+    total = sum(cs.cost_hours(s, rate) for s in jobs.values())
+    left = total - cs.cost_hours(jobs["im3e-1_nu10"], rate) - done * cs.cost_hours(jobs["im1e-1_nu30"], rate)
+    assert lines[-1] == f"all: {total:.0f} h on one rank, {left:.1f} h left"
+    assert any(line.startswith("| h30/im3e-1_nu10 |") and line.endswith(" 100 % | 0.0 |") for line in lines)
+
+
 def test_job_settings_refuse_unknown_variables():
     with pytest.raises(ValueError):
         cs.job_settings("x", "y", 10, 1, 10, 4, 1, 0, colour="red")
