@@ -278,10 +278,7 @@ class Runner:
         if not os.access(self.lmp, os.X_OK):
             sys.exit(f"avalanche: no LAMMPS executable at {self.lmp} (build first: ./run.sh build)")
         self.out, self.np, self.say, self.max_pieces, self.progress = os.path.abspath(out), np, say, max_pieces, progress
-        self.mpi = ["mpirun", "-np", str(np)]
-        version = subprocess.run(["mpirun", "--version"], capture_output=True, text=True).stdout
-        if "Open MPI" in version:
-            self.mpi.append("--oversubscribe")
+        self.mpi = study.mpirun(np)
         self.env = dict(os.environ)
         if os.geteuid() == 0:
             self.env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")

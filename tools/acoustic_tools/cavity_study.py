@@ -208,10 +208,7 @@ def _text(value):
 def command(lmp, here, directory, settings, ranks=1, log="log.lammps", extra=None):
     """mpirun of in.cavity for one job (outputs TAG.* and result.json in
     directory); extra: more -var (the piece's: tpiece, restart, ...)"""
-    mpi = ["mpirun", "-np", str(ranks)]
-    version = subprocess.run(["mpirun", "--version"], capture_output=True, text=True)
-    if "Open MPI" in version.stdout + version.stderr:
-        mpi.append("--oversubscribe")
+    mpi = study.mpirun(ranks)
     arguments = [lmp, "-nocite", "-echo", "none", "-screen", "none", "-in", os.path.join(here, "in.cavity"),
                  "-var", "dir", here, "-var", "tag", settings["tag"], "-var", "result", "result.json"]
     for name in VARIABLES + tuple(n for n in OPTIONAL if n in settings):

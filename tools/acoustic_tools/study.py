@@ -20,6 +20,7 @@ import json
 import math
 import os
 import shutil
+import subprocess
 
 JOB = "job.json"
 RESULT = "result.json"
@@ -161,6 +162,20 @@ def lammps_variables(settings, names):
     for name in names:
         arguments += ["-var", name, str(settings[name])]
     return arguments
+
+
+def mpirun(ranks):
+    """The launcher of one LAMMPS job on `ranks` MPI ranks: mpirun -np N,
+    and with Open MPI --oversubscribe (more ranks than cores is allowed) and
+    --bind-to none.  Open MPI binds the ranks of every mpirun to the cores
+    counted from the first, so jobs launched side by side (run --jobs 2, each
+    on one rank) would all share the first core and each run at half speed;
+    unbound, the kernel spreads them over the free cores."""
+    launcher = ["mpirun", "-np", str(ranks)]
+    version = subprocess.run(["mpirun", "--version"], capture_output=True, text=True)
+    if "Open MPI" in version.stdout + version.stderr:
+        launcher += ["--oversubscribe", "--bind-to", "none"]
+    return launcher
 
 
 def run_jobs(run_one, jobs, workers):

@@ -2,6 +2,9 @@
 keeps of its finished jobs"""
 import json
 import os
+import shutil
+import subprocess
+import sys
 
 import pytest
 
@@ -101,3 +104,16 @@ def test_a_sample_run_again_keeps_its_whole_record(tmp_path):
     assert json.loads((recorded / study.RESULT).read_text())["wall_seconds"] == 549
     assert "mu" not in json.loads((recorded / study.JOB).read_text())
     assert (recorded / "log_summary.txt").read_text() == "packing: in /old/path\n"
+
+
+def test_mpirun_leaves_a_single_rank_job_free_to_use_every_core():
+    """study.mpirun: a one-rank job sees the cores its parent sees (Open MPI
+    would bind it to the first core, and two such jobs side by side, as
+    `study.py run --jobs 2` launches them, would share that core)"""
+    if shutil.which("mpirun") is None:
+        pytest.skip("no mpirun on PATH")
+    environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    probe = [sys.executable, "-c", "import os; print(sorted(os.sched_getaffinity(0)))"]
+    done = subprocess.run(study.mpirun(1) + probe, capture_output=True, text=True, env=environment, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.split("\n")[0] == str(sorted(os.sched_getaffinity(0)))
