@@ -1,5 +1,5 @@
 """study.record_jobs and the sound study's record: what a study's record
-keeps of its finished jobs"""
+keeps of its finished jobs; and study.mpirun, the launcher of its jobs"""
 import json
 import os
 import shutil
